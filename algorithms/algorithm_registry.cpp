@@ -1,0 +1,20 @@
+#include "algorithms/algorithm_registry.hpp"
+
+namespace mhb {
+
+// One line per optimiser; each is defined in its own file.
+
+void register_builtin_algorithms(AlgorithmRegistry& registry) {
+    (void)registry;
+}
+
+const AlgorithmRegistry& builtin_algorithms() {
+    static const AlgorithmRegistry registry = [] {
+        AlgorithmRegistry r("algorithm");
+        register_builtin_algorithms(r);
+        return r;
+    }();
+    return registry;
+}
+
+} // namespace mhb

@@ -1,0 +1,149 @@
+#include "problems/objective.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "problems/parameters.hpp"
+
+namespace mhb {
+
+void Budget::validate() const {
+    if (!max_evaluations && !max_iterations)
+        throw std::invalid_argument("budget: give a number of evaluations or of iterations");
+    if (max_evaluations && *max_evaluations <= 0)
+        throw std::invalid_argument("budget: evaluations = " + std::to_string(*max_evaluations) +
+                                    " is outside [1, inf)");
+    if (max_iterations && *max_iterations <= 0)
+        throw std::invalid_argument("budget: iterations = " + std::to_string(*max_iterations) +
+                                    " is outside [1, inf)");
+    if (target_error && !(*target_error >= 0.0 && std::isfinite(*target_error)))
+        throw std::invalid_argument("budget: target = " + format_real(*target_error) +
+                                    " is outside [0, inf)");
+}
+
+const char* to_string(BoundPolicy policy) {
+    switch (policy) {
+    case BoundPolicy::clamp:
+        return "clamp";
+    case BoundPolicy::reflect:
+        return "reflect";
+    case BoundPolicy::none:
+        return "none";
+    }
+    return "?";
+}
+
+std::int64_t next_checkpoint(std::int64_t evaluations) {
+    if (evaluations < 1)
+        return 1;
+    // Start a little below the answer and walk up the grid.
+    auto k = static_cast<int>(std::floor(10.0 * std::log10(static_cast<double>(evaluations)))) - 1;
+    k = std::max(k, 0);
+    while (true) {
+        const std::int64_t g = std::llround(std::pow(10.0, k / 10.0));
+        if (g > evaluations)
+            return g;
+        ++k;
+    }
+}
+
+Objective::Objective(const Problem& problem, Budget budget, BoundPolicy policy, ObjectiveOptions options)
+    : problem_(problem), budget_(budget), policy_(policy), options_(options) {
+    budget_.validate();
+    if (const auto opt = problem_.known_optimum())
+        f_opt_ = opt->f;
+    if (budget_.target_error && !f_opt_)
+        throw std::invalid_argument("budget: a target needs a problem with a known optimum; '" +
+                                    problem_.name() + "' has none");
+}
+
+void Objective::repair(Eigen::VectorXd& x) const {
+    const Box& box = problem_.bounds();
+    switch (policy_) {
+    case BoundPolicy::clamp:
+        x = x.cwiseMax(box.lower).cwiseMin(box.upper);
+        break;
+    case BoundPolicy::reflect:
+        for (Eigen::Index i = 0; i < x.size(); ++i) {
+            const double lo = box.lower[i];
+            const double hi = box.upper[i];
+            const double width = hi - lo;
+            double v = x[i];
+            if (v >= lo && v <= hi)
+                continue;
+            if (!std::isfinite(v)) {
+                x[i] = v > 0 ? hi : lo;
+                continue;
+            }
+            // Reflection is periodic with period 2*width.
+            double t = std::fmod(v - lo, 2.0 * width);
+            if (t < 0)
+                t += 2.0 * width;
+            x[i] = t <= width ? lo + t : hi - (t - width);
+        }
+        break;
+    case BoundPolicy::none:
+        break;
+    }
+}
+
+double Objective::evaluate(Eigen::VectorXd& x) {
+    if (x.size() != problem_.dimension())
+        throw std::logic_error("objective: point of dimension " + std::to_string(x.size()) + " given to '" +
+                               problem_.name() + "' of dimension " + std::to_string(problem_.dimension()));
+    if (exhausted())
+        throw BudgetExhausted{};
+    repair(x);
+    const double f = problem_.evaluate(x);
+    if (std::isnan(f))
+        throw std::runtime_error("problem '" + problem_.name() + "' returned NaN at evaluation " +
+                                 std::to_string(evaluations_ + 1));
+    ++evaluations_;
+    if (f < best_f_ || best_x_.size() == 0) {
+        best_f_ = f;
+        best_x_ = x;
+    }
+    if (f_opt_ && budget_.target_error && !evaluations_to_target_ && best_f_ - *f_opt_ <= *budget_.target_error)
+        evaluations_to_target_ = evaluations_;
+    if (evaluations_ == next_checkpoint_) {
+        checkpoint_trace_.push_back({evaluations_, best_f_});
+        next_checkpoint_ = next_checkpoint(evaluations_);
+    }
+    return f;
+}
+
+void Objective::initialised() { record_iteration(); }
+
+void Objective::end_iteration() {
+    ++iterations_;
+    record_iteration();
+}
+
+void Objective::record_iteration() {
+    IterationPoint point{iterations_, evaluations_, best_f_, {}};
+    if (options_.record_best_x)
+        point.best_x = best_x_;
+    iteration_trace_.push_back(std::move(point));
+}
+
+bool Objective::exhausted() const {
+    if (budget_.max_evaluations && evaluations_ >= *budget_.max_evaluations)
+        return true;
+    if (budget_.max_iterations && iterations_ >= *budget_.max_iterations)
+        return true;
+    return evaluations_to_target_.has_value();
+}
+
+std::int64_t Objective::remaining_evaluations() const {
+    if (!budget_.max_evaluations)
+        return std::numeric_limits<std::int64_t>::max();
+    return std::max<std::int64_t>(0, *budget_.max_evaluations - evaluations_);
+}
+
+void Objective::finish() {
+    if (evaluations_ > 0 && (checkpoint_trace_.empty() || checkpoint_trace_.back().evaluations != evaluations_))
+        checkpoint_trace_.push_back({evaluations_, best_f_});
+}
+
+} // namespace mhb

@@ -1,0 +1,125 @@
+// The counted, budgeted view of a Problem — the only way an optimiser sees one (the habit of
+// pagmo's problem::fitness: count in the wrapper, not in the plug-in). It
+//   - repairs out-of-bounds candidates by the policy the optimiser declares (clamp by default),
+//   - counts every evaluation and enforces the budget exactly,
+//   - keeps the best-so-far, and
+//   - records the convergence trace: best-so-far at the end of every iteration and at a fixed,
+//     log-spaced grid of evaluation counts shared by every run (so curves share one x-axis).
+//
+// Budget enforcement: once the budget is spent, evaluate() throws BudgetExhausted instead of
+// evaluating. Optimisers loop `while (!objective.exhausted())`, and an evaluation asked for in
+// the middle of an iteration past the budget unwinds cleanly to run_to_budget() (see
+// algorithms/optimizer.hpp). This makes every optimiser's count exact without a check after
+// every evaluation in every inner loop.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "problems/problem.hpp"
+
+namespace mhb {
+
+struct Budget {
+    std::optional<std::int64_t> max_evaluations;
+    std::optional<std::int64_t> max_iterations;
+    // Stop once best - f* <= target_error (needs a known optimum); the evaluations it took are kept.
+    std::optional<double> target_error;
+
+    // Throws std::invalid_argument unless at least one of evaluations/iterations is set and positive.
+    void validate() const;
+};
+
+// How a candidate outside the box is brought back in.
+enum class BoundPolicy {
+    clamp,   // to the nearest face (the paper's choice)
+    reflect, // mirrored at the violated face (repeatedly, for far-out points)
+    none,    // evaluated as is (for optimisers that keep to the box themselves)
+};
+
+const char* to_string(BoundPolicy policy);
+
+// Thrown by Objective::evaluate when the budget is already spent.
+struct BudgetExhausted {};
+
+struct IterationPoint {
+    std::int64_t iteration = 0; // 0 = after initialisation
+    std::int64_t evaluations = 0;
+    double best_f = 0.0;
+    Eigen::VectorXd best_x; // empty unless ObjectiveOptions::record_best_x
+};
+
+struct CheckpointPoint {
+    std::int64_t evaluations = 0;
+    double best_f = 0.0;
+};
+
+struct ObjectiveOptions {
+    bool record_best_x = false; // keep best x at every iteration (parameter trajectories)
+};
+
+// The shared evaluation grid: about ten points per decade (1, 2, 3, 4, 5, 6, 8, 10, 13, 16, 20,
+// 25, ...), i.e. round(10^(k/10)) for k = 0, 1, 2, ... without repeats.
+// The smallest grid point greater than `evaluations`.
+std::int64_t next_checkpoint(std::int64_t evaluations);
+
+class Objective {
+public:
+    Objective(const Problem& problem, Budget budget, BoundPolicy policy = BoundPolicy::clamp,
+              ObjectiveOptions options = {});
+
+    [[nodiscard]] Eigen::Index dimension() const { return problem_.dimension(); }
+    [[nodiscard]] const Box& bounds() const { return problem_.bounds(); }
+    [[nodiscard]] BoundPolicy bound_policy() const { return policy_; }
+
+    // Repairs x in place (so the optimiser keeps the point actually evaluated), evaluates it,
+    // counts it and updates the best-so-far. Throws BudgetExhausted if the budget is spent,
+    // std::logic_error on a wrong size, std::runtime_error if the problem returns NaN.
+    double evaluate(Eigen::VectorXd& x);
+    void repair(Eigen::VectorXd& x) const;
+
+    // Call once after the initial population is evaluated (records iteration 0), and at the end
+    // of every iteration (counts it against max_iterations and records it).
+    void initialised();
+    void end_iteration();
+
+    [[nodiscard]] bool exhausted() const;
+    [[nodiscard]] std::int64_t evaluations() const { return evaluations_; }
+    [[nodiscard]] std::int64_t iterations() const { return iterations_; }
+    // Evaluations left before the evaluation budget is spent (max int64 without one).
+    [[nodiscard]] std::int64_t remaining_evaluations() const;
+    [[nodiscard]] const Budget& budget() const { return budget_; }
+
+    [[nodiscard]] double best_f() const { return best_f_; }
+    [[nodiscard]] const Eigen::VectorXd& best_x() const { return best_x_; }
+    [[nodiscard]] std::optional<std::int64_t> evaluations_to_target() const { return evaluations_to_target_; }
+
+    [[nodiscard]] const std::vector<IterationPoint>& iteration_trace() const { return iteration_trace_; }
+    [[nodiscard]] const std::vector<CheckpointPoint>& checkpoint_trace() const { return checkpoint_trace_; }
+
+    // Closes the trace: the final evaluation count becomes the last checkpoint. Idempotent.
+    void finish();
+
+private:
+    void record_iteration();
+
+    const Problem& problem_;
+    Budget budget_;
+    BoundPolicy policy_;
+    ObjectiveOptions options_;
+    std::optional<double> f_opt_;
+    std::int64_t evaluations_ = 0;
+    std::int64_t iterations_ = 0;
+    std::int64_t next_checkpoint_ = 1;
+    double best_f_ = std::numeric_limits<double>::infinity();
+    Eigen::VectorXd best_x_;
+    std::optional<std::int64_t> evaluations_to_target_;
+    std::vector<IterationPoint> iteration_trace_;
+    std::vector<CheckpointPoint> checkpoint_trace_;
+};
+
+} // namespace mhb

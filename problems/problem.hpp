@@ -1,0 +1,53 @@
+// The Problem contract: what an optimisation problem is to mhbench. A problem computes and
+// nothing else: evaluate() is const, thread-safe and has no hidden state (no counters, no file
+// I/O, no random draws), so one instance is shared read-only by every run of a study.
+// Optimisers never see a Problem: they see the counted Objective (problems/objective.hpp).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace mhb {
+
+// Closed box [lower, upper], one entry per dimension.
+struct Box {
+    Eigen::VectorXd lower;
+    Eigen::VectorXd upper;
+
+    [[nodiscard]] Eigen::Index dimension() const { return lower.size(); }
+    [[nodiscard]] bool contains(const Eigen::VectorXd& x) const;
+    // Throws std::invalid_argument unless lower < upper, both finite, sizes equal and > 0.
+    void validate(const std::string& owner) const;
+};
+
+struct KnownOptimum {
+    double f = 0.0;
+    std::optional<Eigen::VectorXd> x; // where it is attained, if known
+};
+
+class Problem {
+public:
+    virtual ~Problem() = default;
+
+    // Short family name, e.g. "sphere", "bbob", "pmsm".
+    [[nodiscard]] virtual std::string name() const = 0;
+    [[nodiscard]] virtual Eigen::Index dimension() const = 0;
+    [[nodiscard]] virtual const Box& bounds() const = 0;
+    // f(x) for x of size dimension(). Must be safe to call from many threads at once.
+    [[nodiscard]] virtual double evaluate(const Eigen::VectorXd& x) const = 0;
+
+    // The global optimum, where known (test functions; the least-squares optimum of a
+    // steady-state identification problem). Tables show f - f* with it.
+    [[nodiscard]] virtual std::optional<KnownOptimum> known_optimum() const { return std::nullopt; }
+
+    // Names of the coordinates when they are physical parameters (e.g. Rs, Ld, Lq, psi);
+    // empty for test functions.
+    [[nodiscard]] virtual std::vector<std::string> parameter_names() const { return {}; }
+    // The parameters that generated the data, where known, so errors can be reported.
+    [[nodiscard]] virtual std::optional<Eigen::VectorXd> true_parameters() const { return std::nullopt; }
+};
+
+} // namespace mhb

@@ -1,0 +1,120 @@
+// Creates components by name plus `key=value` parameters, so that the CLI, study files and tests
+// build optimisers and problems the same way. Registration is explicit
+// (`register_builtin_algorithms(registry)`), never static self-registration a linker may drop.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "problems/parameters.hpp"
+#include "problems/spec.hpp"
+
+namespace mhb {
+
+template <class Product>
+class Registry {
+public:
+    using Factory = std::function<std::unique_ptr<Product>(const ParameterValues&)>;
+
+    struct Entry {
+        std::string name;
+        std::string summary;   // one line for `mhbench list`
+        std::string reference; // the paper (or library) it implements
+        std::vector<ParameterInfo> parameters;
+        Factory factory;
+    };
+
+    // `kind` names what is registered ("algorithm", "problem") in error messages.
+    explicit Registry(std::string kind) : kind_(std::move(kind)) {}
+
+    void add(Entry entry) {
+        for (const auto& e : entries_)
+            if (e.name == entry.name)
+                throw std::logic_error(kind_ + " '" + entry.name + "' is registered twice");
+        entries_.push_back(std::move(entry));
+    }
+
+    [[nodiscard]] const Entry& find(std::string_view name) const {
+        for (const auto& e : entries_)
+            if (e.name == name)
+                return e;
+        std::string known;
+        for (const auto& e : entries_)
+            known += (known.empty() ? "" : ", ") + e.name;
+        throw std::invalid_argument("unknown " + kind_ + " '" + std::string(name) + "'; known: " +
+                                    (known.empty() ? "none" : known));
+    }
+
+    [[nodiscard]] bool contains(std::string_view name) const {
+        for (const auto& e : entries_)
+            if (e.name == name)
+                return true;
+        return false;
+    }
+
+    [[nodiscard]] ParameterValues validate(const Spec& spec) const {
+        return validate_parameters(spec.name, find(spec.name).parameters, spec);
+    }
+
+    [[nodiscard]] std::unique_ptr<Product> create(const Spec& spec) const {
+        const Entry& entry = find(spec.name);
+        return entry.factory(validate_parameters(spec.name, entry.parameters, spec));
+    }
+
+    [[nodiscard]] std::unique_ptr<Product> create(std::string_view text) const {
+        return create(Spec::parse(text));
+    }
+
+    // Expands integer parameters declared with `allows_range` and written `a-b` into one spec
+    // per value (e.g. `bbob:f=1-24,instance=1-5` gives 120 specs), in lexicographic order of the
+    // ranges as written. Other parameters are left as they are.
+    [[nodiscard]] std::vector<Spec> expand(const Spec& spec) const {
+        const Entry& entry = find(spec.name);
+        std::vector<Spec> out{Spec{spec.name, {}}};
+        for (const auto& [key, value] : spec.parameters) {
+            std::vector<std::string> values{value};
+            for (const auto& p : entry.parameters) {
+                if (p.name != key || !p.allows_range)
+                    continue;
+                const auto dash = value.find('-', 1);
+                long long lo = 0;
+                long long hi = 0;
+                if (dash != std::string::npos && parse_integer(value.substr(0, dash), lo) &&
+                    parse_integer(value.substr(dash + 1), hi)) {
+                    if (hi < lo)
+                        throw std::invalid_argument(spec.name + ": parameter '" + key + "' = " + value +
+                                                    " is an empty range");
+                    if (hi - lo >= 100000)
+                        throw std::invalid_argument(spec.name + ": parameter '" + key + "' = " + value +
+                                                    " is too long a range");
+                    values.clear();
+                    for (long long v = lo; v <= hi; ++v)
+                        values.push_back(std::to_string(v));
+                }
+            }
+            std::vector<Spec> next;
+            next.reserve(out.size() * values.size());
+            for (const auto& partial : out)
+                for (const auto& v : values) {
+                    Spec s = partial;
+                    s.parameters.emplace_back(key, v);
+                    next.push_back(std::move(s));
+                }
+            out = std::move(next);
+        }
+        return out;
+    }
+
+    [[nodiscard]] const std::vector<Entry>& entries() const { return entries_; }
+    [[nodiscard]] const std::string& kind() const { return kind_; }
+
+private:
+    std::string kind_;
+    std::vector<Entry> entries_;
+};
+
+} // namespace mhb

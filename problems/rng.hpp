@@ -1,0 +1,56 @@
+// Random numbers that are the same on every platform and standard library: xoshiro256** seeded
+// through SplitMix64, with our own uniform, integer and normal draws (std:: distributions differ
+// between libstdc++ and libc++, and would break bit-for-bit reproducibility).
+//
+// Every run gets its own stream from derive_seed(study seed, algorithm, problem, run index), a
+// fixed hash of names and numbers — never thread ids or time — so results do not depend on
+// scheduling or thread count.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+namespace mhb {
+
+// FNV-1a, 64 bit: stable across runs, compilers and platforms (unlike std::hash).
+std::uint64_t stable_hash(std::string_view text) noexcept;
+
+// SplitMix64's finaliser: a bijective mix of 64 bits.
+std::uint64_t mix64(std::uint64_t x) noexcept;
+
+// The seed of one run's stream.
+std::uint64_t derive_seed(std::uint64_t study_seed, std::string_view algorithm_spec,
+                          std::string_view problem_spec, std::uint64_t run_index) noexcept;
+
+class Rng {
+public:
+    using result_type = std::uint64_t;
+
+    explicit Rng(std::uint64_t seed) noexcept;
+
+    // Raw 64 bits (xoshiro256**, Blackman and Vigna 2018).
+    result_type next() noexcept;
+    result_type operator()() noexcept { return next(); }
+    static constexpr result_type min() noexcept { return 0; }
+    static constexpr result_type max() noexcept { return ~result_type{0}; }
+
+    // Uniform on [0, 1), 53 random bits.
+    double uniform() noexcept;
+    // Uniform on [lo, hi).
+    double uniform(double lo, double hi) noexcept { return lo + (hi - lo) * uniform(); }
+    // Uniform integer on [0, n), unbiased (Lemire's multiply-and-reject). n must be > 0.
+    std::uint64_t below(std::uint64_t n) noexcept;
+    // Uniform index on [0, n) other than `excluded` (n must be >= 2).
+    std::uint64_t below_except(std::uint64_t n, std::uint64_t excluded) noexcept;
+    // Standard normal (Marsaglia's polar method; the spare value is kept for the next call).
+    double normal() noexcept;
+    // True with probability p.
+    bool bernoulli(double p) noexcept { return uniform() < p; }
+
+private:
+    std::uint64_t s_[4];
+    double spare_normal_ = 0.0;
+    bool has_spare_ = false;
+};
+
+} // namespace mhb

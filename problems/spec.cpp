@@ -1,0 +1,96 @@
+#include "problems/spec.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace mhb {
+namespace {
+
+bool is_name_char(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-' || c == '.';
+}
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
+        s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
+        s.remove_suffix(1);
+    return s;
+}
+
+} // namespace
+
+Spec Spec::parse(std::string_view text) {
+    const std::string_view original = text;
+    text = trim(text);
+    const auto fail = [&](const std::string& why) {
+        throw std::invalid_argument("'" + std::string(original) + "': " + why);
+    };
+    Spec spec;
+    const auto colon = text.find(':');
+    spec.name = std::string(trim(text.substr(0, colon)));
+    if (spec.name.empty())
+        fail("a name is missing (write name:key=value,...)");
+    if (!std::all_of(spec.name.begin(), spec.name.end(), is_name_char))
+        fail("name '" + spec.name + "' may only hold letters, digits, '_', '-' and '.'");
+    if (colon == std::string_view::npos)
+        return spec;
+    std::string_view rest = text.substr(colon + 1);
+    while (true) {
+        const auto comma = rest.find(',');
+        const std::string_view item = trim(rest.substr(0, comma));
+        const auto eq = item.find('=');
+        if (eq == std::string_view::npos)
+            fail(std::string(item) + " is not key=value"); // (a quoted prefix trips GCC 12's -Wrestrict)
+        std::string key(trim(item.substr(0, eq)));
+        std::string value(trim(item.substr(eq + 1)));
+        if (key.empty())
+            fail("a key is empty in '" + std::string(item) + "'");
+        if (value.empty())
+            fail("parameter '" + key + "' has no value");
+        if (spec.find(key) != nullptr)
+            fail("parameter '" + key + "' is given twice");
+        spec.parameters.emplace_back(std::move(key), std::move(value));
+        if (comma == std::string_view::npos)
+            break;
+        rest = rest.substr(comma + 1);
+    }
+    return spec;
+}
+
+std::string Spec::canonical() const {
+    auto sorted = parameters;
+    std::sort(sorted.begin(), sorted.end());
+    std::string out = name;
+    for (std::size_t i = 0; i < sorted.size(); ++i) {
+        out += (i == 0 ? ':' : ',');
+        out += sorted[i].first + '=' + sorted[i].second;
+    }
+    return out;
+}
+
+const std::string* Spec::find(std::string_view key) const {
+    for (const auto& [k, v] : parameters)
+        if (k == key)
+            return &v;
+    return nullptr;
+}
+
+std::vector<std::string> split_spec_list(std::string_view text) {
+    std::vector<std::string> out;
+    std::size_t i = 0;
+    while (i < text.size()) {
+        while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\n'))
+            ++i;
+        std::size_t j = i;
+        while (j < text.size() && text[j] != ' ' && text[j] != '\t' && text[j] != '\n')
+            ++j;
+        if (j > i)
+            out.emplace_back(text.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
+} // namespace mhb

@@ -1,0 +1,380 @@
+#include "results/store.hpp"
+
+#include <charconv>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "results/csv.hpp"
+
+namespace mhb {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string join_numbers(const std::vector<double>& values) {
+    std::string out;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (i > 0)
+            out += ' ';
+        out += csv_number(values[i]);
+    }
+    return out;
+}
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw std::runtime_error(path.string() + ": cannot be opened (missing?)");
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+const char* const result_files[] = {StudyFiles::runs,         StudyFiles::curves,  StudyFiles::checkpoints,
+                                    StudyFiles::trajectories, StudyFiles::timings, StudyFiles::journal};
+
+} // namespace
+
+std::string runs_csv_header(const std::vector<std::string>& parameter_columns) {
+    std::string header = "run_id,algorithm,problem,run,seed,status,evaluations,iterations,best_f,f_opt,error,"
+                         "evals_to_target,best_x";
+    for (const auto& p : parameter_columns)
+        header += "," + p + "," + p + "_true," + p + "_err_pct";
+    return header + ",message\n";
+}
+
+StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string context_text,
+                         std::vector<std::string> parameter_columns, bool overwrite)
+    : dir_(std::move(dir)), parameter_columns_(std::move(parameter_columns)) {
+    std::error_code ec;
+    fs::create_directories(dir_, ec);
+    if (ec || !fs::is_directory(dir_))
+        throw std::runtime_error(dir_.string() + ": cannot create the output directory (" +
+                                 (ec ? ec.message() : std::string("not a directory")) + ")");
+    const bool finished = fs::exists(dir_ / StudyFiles::runs);
+    const bool unfinished = fs::exists(dir_ / StudyFiles::journal);
+    bool resume = false;
+    if (finished && !overwrite)
+        throw std::runtime_error(dir_.string() +
+                                 ": holds a finished study; choose another --out or pass --overwrite");
+    if (!finished && unfinished) {
+        std::string previous;
+        if (fs::exists(dir_ / StudyFiles::study))
+            previous = read_text(dir_ / StudyFiles::study);
+        resume = previous == study_text;
+        if (!resume && !overwrite)
+            throw std::runtime_error(dir_.string() +
+                                     ": holds an unfinished run of another study; choose another --out or "
+                                     "pass --overwrite");
+    }
+    if (!resume)
+        for (const char* name : result_files)
+            fs::remove(dir_ / name, ec);
+    write_file_atomically(dir_ / StudyFiles::study, study_text);
+    write_file_atomically(dir_ / StudyFiles::context, context_text);
+    if (resume)
+        load_journal();
+}
+
+StudyWriter::Block StudyWriter::render(const RunRecord& r, double wall_seconds) const {
+    Block block;
+    const std::string id = std::to_string(r.run_id);
+    std::string line = id + ',' + csv_field(r.algorithm) + ',' + csv_field(r.problem) + ',' +
+                       std::to_string(r.run_index) + ',' + std::to_string(r.seed) + ',' + (r.ok ? "ok" : "failed") +
+                       ',' + std::to_string(r.evaluations) + ',' + std::to_string(r.iterations) + ',' +
+                       (r.ok ? csv_number(r.best_f) : "") + ',' + csv_optional(r.f_opt) + ',' +
+                       csv_optional(r.error()) + ',' +
+                       (r.evaluations_to_target ? std::to_string(*r.evaluations_to_target) : "") + ',' +
+                       join_numbers(r.best_x);
+    for (const auto& column : parameter_columns_) {
+        std::string value;
+        std::string truth;
+        std::string error;
+        for (std::size_t k = 0; k < r.parameter_names.size(); ++k) {
+            if (r.parameter_names[k] != column || k >= r.best_x.size())
+                continue;
+            value = csv_number(r.best_x[k]);
+            if (k < r.true_parameters.size()) {
+                truth = csv_number(r.true_parameters[k]);
+                if (r.true_parameters[k] != 0.0)
+                    error = csv_number(100.0 * (r.best_x[k] - r.true_parameters[k]) / r.true_parameters[k]);
+            }
+        }
+        line += ',' + value + ',' + truth + ',' + error;
+    }
+    block.run_line = line + ',' + csv_field(r.message) + '\n';
+
+    for (const auto& p : r.curve) {
+        block.curve_lines += id + ',' + std::to_string(p.iteration) + ',' + std::to_string(p.evaluations) + ',' +
+                             csv_number(p.best_f) + '\n';
+        if (!r.parameter_names.empty() && !p.best_x.empty()) {
+            std::string row = id + ',' + std::to_string(p.iteration);
+            for (const auto& column : parameter_columns_) {
+                std::string value;
+                for (std::size_t k = 0; k < r.parameter_names.size(); ++k)
+                    if (r.parameter_names[k] == column && k < p.best_x.size())
+                        value = csv_number(p.best_x[k]);
+                row += ',' + value;
+            }
+            block.trajectory_lines += row + '\n';
+        }
+    }
+    for (const auto& c : r.checkpoints)
+        block.checkpoint_lines += id + ',' + std::to_string(c.evaluations) + ',' + csv_number(c.best_f) + '\n';
+    block.timing_line = id + ',' + csv_number(wall_seconds) + '\n';
+    return block;
+}
+
+namespace {
+
+// Journal lines: "begin ID", then "R|C|K|T|W <csv line>", then "end ID". A block without its
+// "end" line (the process died while writing it) is dropped on resume.
+void append_tagged(std::string& out, char tag, const std::string& lines) {
+    std::size_t start = 0;
+    while (start < lines.size()) {
+        const auto end = lines.find('\n', start);
+        out += tag;
+        out += ' ';
+        out.append(lines, start, end - start + 1);
+        start = end + 1;
+    }
+}
+
+std::string journal_text(std::int64_t id, const std::string& run, const std::string& curves,
+                         const std::string& checkpoints, const std::string& trajectories, const std::string& timing) {
+    std::string text = "begin " + std::to_string(id) + '\n';
+    append_tagged(text, 'R', run);
+    append_tagged(text, 'C', curves);
+    append_tagged(text, 'K', checkpoints);
+    append_tagged(text, 'T', trajectories);
+    append_tagged(text, 'W', timing);
+    return text + "end " + std::to_string(id) + '\n';
+}
+
+} // namespace
+
+void StudyWriter::load_journal() {
+    std::ifstream in(dir_ / StudyFiles::journal, std::ios::binary);
+    std::string line;
+    Block current;
+    std::int64_t current_id = -1;
+    bool in_block = false;
+    while (std::getline(in, line)) {
+        if (in.eof())
+            break; // a last line without its newline was cut short
+        if (line.rfind("begin ", 0) == 0) {
+            current = Block{};
+            in_block = std::from_chars(line.data() + 6, line.data() + line.size(), current_id).ec == std::errc();
+        } else if (line.rfind("end ", 0) == 0) {
+            std::int64_t id = -2;
+            std::from_chars(line.data() + 4, line.data() + line.size(), id);
+            if (in_block && id == current_id && !current.run_line.empty()) {
+                blocks_[id] = current;
+                completed_.insert(id);
+            }
+            in_block = false;
+        } else if (in_block && line.size() >= 2 && line[1] == ' ') {
+            const std::string content = line.substr(2) + '\n';
+            switch (line[0]) {
+            case 'R':
+                current.run_line += content;
+                break;
+            case 'C':
+                current.curve_lines += content;
+                break;
+            case 'K':
+                current.checkpoint_lines += content;
+                break;
+            case 'T':
+                current.trajectory_lines += content;
+                break;
+            case 'W':
+                current.timing_line += content;
+                break;
+            default:
+                in_block = false;
+            }
+        } else {
+            in_block = false;
+        }
+    }
+    // Rewrite the journal with the complete blocks only, so that new blocks never follow a
+    // half-written line.
+    std::string text;
+    for (const auto& [id, b] : blocks_)
+        text += journal_text(id, b.run_line, b.curve_lines, b.checkpoint_lines, b.trajectory_lines, b.timing_line);
+    write_file_atomically(dir_ / StudyFiles::journal, text);
+}
+
+void StudyWriter::append(const RunRecord& record, double wall_seconds) {
+    Block block = render(record, wall_seconds);
+    const std::string text = journal_text(record.run_id, block.run_line, block.curve_lines, block.checkpoint_lines,
+                                          block.trajectory_lines, block.timing_line);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    std::ofstream out(dir_ / StudyFiles::journal, std::ios::binary | std::ios::app);
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.flush();
+    if (!out)
+        throw std::runtime_error((dir_ / StudyFiles::journal).string() + ": writing failed (disk full?)");
+    blocks_[record.run_id] = std::move(block);
+    completed_.insert(record.run_id);
+}
+
+void StudyWriter::finish() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    std::string runs = runs_csv_header(parameter_columns_);
+    std::string curves = "run_id,iteration,evaluations,best_f\n";
+    std::string checkpoints = "run_id,evaluations,best_f\n";
+    std::string trajectories = "run_id,iteration";
+    for (const auto& p : parameter_columns_)
+        trajectories += "," + p;
+    trajectories += '\n';
+    std::string timings = "run_id,wall_seconds\n";
+    for (const auto& [id, b] : blocks_) {
+        runs += b.run_line;
+        curves += b.curve_lines;
+        checkpoints += b.checkpoint_lines;
+        trajectories += b.trajectory_lines;
+        timings += b.timing_line;
+    }
+    write_file_atomically(dir_ / StudyFiles::curves, curves);
+    write_file_atomically(dir_ / StudyFiles::checkpoints, checkpoints);
+    write_file_atomically(dir_ / StudyFiles::trajectories, trajectories);
+    write_file_atomically(dir_ / StudyFiles::timings, timings);
+    write_file_atomically(dir_ / StudyFiles::runs, runs);
+    std::error_code ec;
+    fs::remove(dir_ / StudyFiles::journal, ec);
+}
+
+namespace {
+
+std::vector<double> split_numbers(const CsvTable& t, std::size_t row, std::size_t column) {
+    std::vector<double> values;
+    const std::string& text = t.rows[row][column];
+    std::size_t i = 0;
+    while (i < text.size()) {
+        const auto j = std::min(text.find(' ', i), text.size());
+        double v = 0;
+        const auto [ptr, ec] = std::from_chars(text.data() + i, text.data() + j, v);
+        if (ec != std::errc() || ptr != text.data() + j)
+            throw std::runtime_error(t.path.string() + ", line " + std::to_string(t.line_numbers[row]) +
+                                     ", column '" + t.header[column] + "': not a list of numbers");
+        values.push_back(v);
+        i = j + 1;
+    }
+    return values;
+}
+
+std::int64_t find_run(const std::map<std::int64_t, std::size_t>& index, const CsvTable& t, std::size_t row) {
+    const std::int64_t id = t.integer(row, t.column("run_id"));
+    if (index.find(id) == index.end())
+        throw std::runtime_error(t.path.string() + ", line " + std::to_string(t.line_numbers[row]) +
+                                 ": run_id " + std::to_string(id) + " is not in runs.csv");
+    return id;
+}
+
+} // namespace
+
+StudyData load_study(const fs::path& dir) {
+    if (!fs::is_directory(dir))
+        throw std::runtime_error(dir.string() + ": is not a directory");
+    if (!fs::exists(dir / StudyFiles::runs) && fs::exists(dir / StudyFiles::journal))
+        throw std::runtime_error(dir.string() +
+                                 ": holds an unfinished study (journal.txt but no runs.csv); run the same "
+                                 "command again to resume it");
+    StudyData data;
+    data.directory = dir;
+    data.study_text = read_text(dir / StudyFiles::study);
+    data.context_text = read_text(dir / StudyFiles::context);
+
+    const CsvTable runs = read_csv(dir / StudyFiles::runs);
+    const std::size_t first_parameter = runs.column("best_x") + 1;
+    const std::size_t message_column = runs.column("message");
+    if (message_column < first_parameter || (message_column - first_parameter) % 3 != 0)
+        throw std::runtime_error(runs.path.string() + ": parameter columns are malformed");
+    for (std::size_t c = first_parameter; c < message_column; c += 3)
+        data.parameter_columns.push_back(runs.header[c]);
+
+    std::map<std::int64_t, std::size_t> index;
+    const auto col = [&](const char* name) { return runs.column(name); };
+    for (std::size_t row = 0; row < runs.rows.size(); ++row) {
+        RunRecord r;
+        r.run_id = runs.integer(row, col("run_id"));
+        r.algorithm = runs.rows[row][col("algorithm")];
+        r.problem = runs.rows[row][col("problem")];
+        r.run_index = runs.integer(row, col("run"));
+        const std::string& seed = runs.rows[row][col("seed")];
+        if (std::from_chars(seed.data(), seed.data() + seed.size(), r.seed).ec != std::errc())
+            throw std::runtime_error(runs.path.string() + ", line " + std::to_string(runs.line_numbers[row]) +
+                                     ", column 'seed': not an unsigned integer");
+        const std::string& status = runs.rows[row][col("status")];
+        if (status != "ok" && status != "failed")
+            throw std::runtime_error(runs.path.string() + ", line " + std::to_string(runs.line_numbers[row]) +
+                                     ", column 'status': '" + status + "' is not ok or failed");
+        r.ok = status == "ok";
+        r.evaluations = runs.integer(row, col("evaluations"));
+        r.iterations = runs.integer(row, col("iterations"));
+        if (r.ok)
+            r.best_f = runs.number(row, col("best_f"));
+        r.f_opt = runs.optional_number(row, col("f_opt"));
+        if (const auto e = runs.optional_number(row, col("evals_to_target")))
+            r.evaluations_to_target = static_cast<std::int64_t>(*e);
+        r.best_x = split_numbers(runs, row, col("best_x"));
+        bool all_truths = true;
+        for (std::size_t c = first_parameter; c < message_column; c += 3) {
+            if (runs.rows[row][c].empty())
+                continue;
+            r.parameter_names.push_back(runs.header[c]);
+            const auto truth = runs.optional_number(row, c + 1);
+            all_truths = all_truths && truth.has_value();
+            r.true_parameters.push_back(truth.value_or(0.0));
+        }
+        if (!all_truths)
+            r.true_parameters.clear();
+        r.message = runs.rows[row][message_column];
+        if (index.count(r.run_id) != 0)
+            throw std::runtime_error(runs.path.string() + ", line " + std::to_string(runs.line_numbers[row]) +
+                                     ": run_id " + std::to_string(r.run_id) + " appears twice");
+        index[r.run_id] = data.runs.size();
+        data.runs.push_back(std::move(r));
+    }
+
+    const CsvTable curves = read_csv(dir / StudyFiles::curves);
+    for (std::size_t row = 0; row < curves.rows.size(); ++row) {
+        const auto id = find_run(index, curves, row);
+        data.runs[index[id]].curve.push_back({curves.integer(row, curves.column("iteration")),
+                                              curves.integer(row, curves.column("evaluations")),
+                                              curves.number(row, curves.column("best_f")),
+                                              {}});
+    }
+    const CsvTable checkpoints = read_csv(dir / StudyFiles::checkpoints);
+    for (std::size_t row = 0; row < checkpoints.rows.size(); ++row) {
+        const auto id = find_run(index, checkpoints, row);
+        data.runs[index[id]].checkpoints.push_back({checkpoints.integer(row, checkpoints.column("evaluations")),
+                                                    checkpoints.number(row, checkpoints.column("best_f"))});
+    }
+    const CsvTable trajectories = read_csv(dir / StudyFiles::trajectories);
+    for (std::size_t row = 0; row < trajectories.rows.size(); ++row) {
+        const auto id = find_run(index, trajectories, row);
+        RunRecord& r = data.runs[index[id]];
+        const std::int64_t iteration = trajectories.integer(row, trajectories.column("iteration"));
+        CurvePoint* point = nullptr;
+        for (auto& p : r.curve)
+            if (p.iteration == iteration)
+                point = &p;
+        if (point == nullptr)
+            throw std::runtime_error(trajectories.path.string() + ", line " +
+                                     std::to_string(trajectories.line_numbers[row]) + ": iteration " +
+                                     std::to_string(iteration) + " of run " + std::to_string(id) +
+                                     " is not in curves.csv");
+        for (const auto& name : r.parameter_names)
+            point->best_x.push_back(trajectories.number(row, trajectories.column(name)));
+    }
+    const CsvTable timings = read_csv(dir / StudyFiles::timings);
+    for (std::size_t row = 0; row < timings.rows.size(); ++row)
+        data.wall_seconds[find_run(index, timings, row)] = timings.number(row, timings.column("wall_seconds"));
+    return data;
+}
+
+} // namespace mhb

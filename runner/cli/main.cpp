@@ -1,0 +1,72 @@
+// mhbench: benchmarking metaheuristic optimisers, starting from the paper study of
+// Li, Wang and Ji (2017), "PMSM parameter identification based on improved TLBO".
+#include <boost/program_options/errors.hpp>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "mhb_version.hpp"
+#include "runner/cli/command.hpp"
+
+namespace mhb::cli {
+
+// One line per subcommand; each is defined in its own file.
+
+namespace {
+
+const std::vector<Command>& commands() {
+    static const std::vector<Command> table = {
+    };
+    return table;
+}
+
+void print_usage(std::ostream& out) {
+    out << "mhbench " << build::version << " — parallel benchmarking of metaheuristic optimisers\n\n"
+        << "Usage: mhbench <command> [options]    (mhbench <command> --help for its options)\n\n"
+        << "Commands:\n";
+    for (const auto& c : commands()) {
+        char line[160];
+        std::snprintf(line, sizeof line, "  %-10s %s\n", c.name, c.summary);
+        out << line;
+    }
+    out << "\nOptions:\n  --help     this text\n  --version  version and git commit\n";
+}
+
+} // namespace
+} // namespace mhb::cli
+
+int main(int argc, char** argv) {
+    using namespace mhb::cli;
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        print_usage(args.empty() ? std::cerr : std::cout);
+        return args.empty() ? exit_usage : exit_ok;
+    }
+    if (args[0] == "--version") {
+        std::cout << "mhbench " << mhb::build::version << " (commit " << mhb::build::git_commit << ", "
+                  << mhb::build::compiler << ", " << mhb::build::build_type << ")\n";
+        return exit_ok;
+    }
+    for (const auto& command : commands()) {
+        if (args[0] != command.name)
+            continue;
+        try {
+            return command.run(std::vector<std::string>(args.begin() + 1, args.end()));
+        } catch (const boost::program_options::error& e) {
+            std::cerr << "mhbench " << command.name << ": " << e.what() << " (see mhbench " << command.name
+                      << " --help)\n";
+            return exit_usage;
+        } catch (const std::invalid_argument& e) {
+            std::cerr << "mhbench " << command.name << ": " << e.what() << '\n';
+            return exit_usage;
+        } catch (const std::exception& e) {
+            std::cerr << "mhbench " << command.name << ": " << e.what() << '\n';
+            return exit_failure;
+        }
+    }
+    std::cerr << "mhbench: unknown command '" << args[0] << "'; run mhbench --help for the list\n";
+    return exit_usage;
+}

@@ -1,0 +1,57 @@
+#include "runner/execute_run.hpp"
+
+#include <exception>
+
+#include "problems/rng.hpp"
+
+namespace mhb {
+namespace {
+
+std::vector<double> to_vector(const Eigen::VectorXd& x) { return {x.data(), x.data() + x.size()}; }
+
+} // namespace
+
+RunRecord execute_run(const RunRequest& request) {
+    RunRecord record;
+    record.run_id = request.run_id;
+    record.algorithm = request.algorithm_spec;
+    record.problem = request.problem_spec;
+    record.run_index = request.run_index;
+    record.seed = derive_seed(request.study_seed, request.algorithm_spec, request.problem_spec,
+                              static_cast<std::uint64_t>(request.run_index));
+    const Problem& problem = *request.problem;
+    record.parameter_names = problem.parameter_names();
+    if (const auto truth = problem.true_parameters())
+        record.true_parameters = to_vector(*truth);
+    if (const auto optimum = problem.known_optimum())
+        record.f_opt = optimum->f;
+
+    try {
+        ObjectiveOptions options;
+        options.record_best_x = !record.parameter_names.empty();
+        Objective objective(problem, request.budget, request.optimizer->bound_policy(), options);
+        Rng rng(record.seed);
+        run_to_budget(*request.optimizer, objective, rng);
+        record.best_f = objective.best_f();
+        record.best_x = to_vector(objective.best_x());
+        record.evaluations = objective.evaluations();
+        record.iterations = objective.iterations();
+        record.evaluations_to_target = objective.evaluations_to_target();
+        for (const auto& p : objective.iteration_trace())
+            record.curve.push_back({p.iteration, p.evaluations, p.best_f, to_vector(p.best_x)});
+        for (const auto& c : objective.checkpoint_trace())
+            record.checkpoints.push_back({c.evaluations, c.best_f});
+        if (objective.evaluations() == 0) {
+            record.ok = false;
+            record.message = "the optimiser made no evaluation";
+        }
+    } catch (const std::exception& e) {
+        record.ok = false;
+        record.message = e.what();
+        record.curve.clear();
+        record.checkpoints.clear();
+    }
+    return record;
+}
+
+} // namespace mhb

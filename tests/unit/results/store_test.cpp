@@ -1,0 +1,146 @@
+// The study store: records round-trip exactly, files are sorted by run id whatever the order
+// runs finish in, an interrupted study resumes, and damaged directories give clear errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "results/csv.hpp"
+#include "results/store.hpp"
+
+namespace mhb {
+namespace {
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("mhb_store_test_" + name);
+    fs::remove_all(dir);
+    return dir;
+}
+
+RunRecord make_record(std::int64_t id) {
+    RunRecord r;
+    r.run_id = id;
+    r.algorithm = "pso:c1=2,w=0.5";
+    r.problem = "pmsm:load=2,speed=2500";
+    r.run_index = id;
+    r.seed = 0xfedcba9876543210ULL + static_cast<std::uint64_t>(id);
+    r.best_f = 0.1 + static_cast<double>(id) / 3.0;
+    r.f_opt = 0.1;
+    r.evaluations = 100 + id;
+    r.iterations = 3;
+    r.best_x = {0.33, 0.00324 + 1e-7 * static_cast<double>(id), 0.00324, 0.0776};
+    r.parameter_names = {"Rs", "Ld", "Lq", "psi"};
+    r.true_parameters = {0.33, 0.00324, 0.00324, 0.0776};
+    for (std::int64_t i = 0; i <= 3; ++i)
+        r.curve.push_back({i, 50 * (i + 1), 1.0 / static_cast<double>(i + 1), r.best_x});
+    r.checkpoints = {{1, 9.0}, {2, 5.0}, {100 + id, r.best_f}};
+    return r;
+}
+
+TEST(Store, RoundTripsRecordsExactlyAndSortsByRunId) {
+    const fs::path dir = fresh_dir("roundtrip");
+    {
+        StudyWriter w(dir, "[study]\nseed=1\n", "threads=2\n", {"Rs", "Ld", "Lq", "psi"}, false);
+        for (std::int64_t id : {2, 0, 1}) // finishing out of order, as parallel runs do
+            w.append(make_record(id), 0.5);
+        RunRecord failed;
+        failed.run_id = 3;
+        failed.algorithm = "tlbo";
+        failed.problem = "sphere:dim=2";
+        failed.ok = false;
+        failed.message = "boom, with a \"quote\"\nand a newline";
+        w.append(failed, 0.0);
+        w.finish();
+    }
+    EXPECT_FALSE(fs::exists(dir / "journal.txt"));
+    const StudyData data = load_study(dir);
+    ASSERT_EQ(data.runs.size(), 4u);
+    EXPECT_EQ(data.parameter_columns, (std::vector<std::string>{"Rs", "Ld", "Lq", "psi"}));
+    for (std::int64_t id = 0; id < 3; ++id) {
+        const RunRecord expected = make_record(id);
+        const RunRecord& got = data.runs[static_cast<std::size_t>(id)];
+        EXPECT_EQ(got.run_id, id);
+        EXPECT_EQ(got.algorithm, expected.algorithm);
+        EXPECT_EQ(got.seed, expected.seed);
+        EXPECT_EQ(got.best_f, expected.best_f); // exact, not approximate
+        EXPECT_EQ(got.best_x, expected.best_x);
+        EXPECT_EQ(got.parameter_names, expected.parameter_names);
+        EXPECT_EQ(got.true_parameters, expected.true_parameters);
+        ASSERT_EQ(got.curve.size(), 4u);
+        EXPECT_EQ(got.curve[2].best_f, 1.0 / 3.0);
+        EXPECT_EQ(got.curve[2].best_x, expected.best_x);
+        ASSERT_EQ(got.checkpoints.size(), 3u);
+        EXPECT_EQ(got.checkpoints[2].evaluations, 100 + id);
+    }
+    EXPECT_FALSE(data.runs[3].ok);
+    EXPECT_EQ(data.runs[3].message, "boom, with a \"quote\" and a newline");
+    EXPECT_EQ(data.study_text, "[study]\nseed=1\n");
+}
+
+TEST(Store, ResumesAnInterruptedStudyKeepingFinishedRunsOnly) {
+    const fs::path dir = fresh_dir("resume");
+    {
+        StudyWriter w(dir, "study A\n", "", {}, false);
+        w.append(make_record(0), 0.1);
+        w.append(make_record(1), 0.1);
+        // No finish(): the process is "killed" here. Simulate a half-written third block.
+        std::ofstream(dir / "journal.txt", std::ios::app) << "begin 2\nR 2,tlbo,sph";
+    }
+    EXPECT_FALSE(fs::exists(dir / "runs.csv"));
+    EXPECT_THROW(load_study(dir), std::runtime_error); // unfinished: not a study to report on
+    EXPECT_THROW(StudyWriter(dir, "study B\n", "", {}, false), std::runtime_error);
+    StudyWriter w(dir, "study A\n", "", {}, false);
+    EXPECT_EQ(w.completed(), (std::set<std::int64_t>{0, 1}));
+    w.append(make_record(2), 0.1);
+    w.finish();
+    EXPECT_EQ(load_study(dir).runs.size(), 3u);
+    EXPECT_THROW(StudyWriter(dir, "study A\n", "", {}, false), std::runtime_error); // finished
+    EXPECT_NO_THROW(StudyWriter(dir, "study A\n", "", {}, true));
+}
+
+TEST(Store, DamagedDirectoriesGiveErrorsNamingTheFile) {
+    const fs::path dir = fresh_dir("damaged");
+    {
+        StudyWriter w(dir, "s\n", "", {}, false);
+        w.append(make_record(0), 0.1);
+        w.finish();
+    }
+    // Truncate curves.csv in the middle of a line.
+    const fs::path curves = dir / "curves.csv";
+    std::string text;
+    {
+        std::ifstream in(curves);
+        text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    std::ofstream(curves, std::ios::trunc) << text.substr(0, text.size() - 4);
+    try {
+        (void)load_study(dir);
+        FAIL();
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("curves.csv"), std::string::npos) << e.what();
+    }
+    fs::remove(dir / "timings.csv");
+    EXPECT_THROW(load_study(dir), std::runtime_error);
+    EXPECT_THROW(load_study(dir / "nope"), std::runtime_error);
+}
+
+TEST(Store, UnwritableOutputIsAClearError) {
+    try {
+        StudyWriter w("/proc/mhbench_cannot_write_here", "s\n", "", {}, false);
+        FAIL();
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("/proc/mhbench_cannot_write_here"), std::string::npos);
+    }
+}
+
+TEST(Csv, QuotesAndSplitsAndNumbersRoundTrip) {
+    EXPECT_EQ(csv_field("a,b"), "\"a,b\"");
+    EXPECT_EQ(csv_split("1,\"a,\"\"b\"\"\",,x"), (std::vector<std::string>{"1", "a,\"b\"", "", "x"}));
+    EXPECT_EQ(csv_number(0.1), "0.1");
+    EXPECT_EQ(csv_number(1.0 / 3.0), "0.3333333333333333");
+    EXPECT_THROW(csv_split("\"open"), std::runtime_error);
+}
+
+} // namespace
+} // namespace mhb
