@@ -40,7 +40,7 @@ std::string runs_csv_header(const std::vector<std::string>& parameter_columns) {
     std::string header = "run_id,algorithm,problem,run,seed,status,evaluations,iterations,best_f,f_opt,error,"
                          "evals_to_target,best_x";
     for (const auto& p : parameter_columns)
-        header += "," + p + "," + p + "_true," + p + "_err_pct";
+        header += "," + p + "," + p + "_true," + p + "_opt," + p + "_err_pct";
     return header + ",message\n";
 }
 
@@ -90,18 +90,21 @@ StudyWriter::Block StudyWriter::render(const RunRecord& r, double wall_seconds) 
     for (const auto& column : parameter_columns_) {
         std::string value;
         std::string truth;
+        std::string optimum;
         std::string error;
         for (std::size_t k = 0; k < r.parameter_names.size(); ++k) {
             if (r.parameter_names[k] != column || k >= r.best_x.size())
                 continue;
             value = csv_number(r.best_x[k]);
+            if (k < r.x_opt.size())
+                optimum = csv_number(r.x_opt[k]);
             if (k < r.true_parameters.size()) {
                 truth = csv_number(r.true_parameters[k]);
                 if (r.true_parameters[k] != 0.0)
                     error = csv_number(100.0 * (r.best_x[k] - r.true_parameters[k]) / r.true_parameters[k]);
             }
         }
-        line += ',' + value + ',' + truth + ',' + error;
+        line += ',' + value + ',' + truth + ',' + optimum + ',' + error;
     }
     block.run_line = line + ',' + csv_field(r.message) + '\n';
 
@@ -291,9 +294,10 @@ StudyData load_study(const fs::path& dir) {
     const CsvTable runs = read_csv(dir / StudyFiles::runs);
     const std::size_t first_parameter = runs.column("best_x") + 1;
     const std::size_t message_column = runs.column("message");
-    if (message_column < first_parameter || (message_column - first_parameter) % 3 != 0)
+    constexpr std::size_t per_parameter = 4; // P, P_true, P_opt, P_err_pct
+    if (message_column < first_parameter || (message_column - first_parameter) % per_parameter != 0)
         throw std::runtime_error(runs.path.string() + ": parameter columns are malformed");
-    for (std::size_t c = first_parameter; c < message_column; c += 3)
+    for (std::size_t c = first_parameter; c < message_column; c += per_parameter)
         data.parameter_columns.push_back(runs.header[c]);
 
     std::map<std::int64_t, std::size_t> index;
@@ -322,16 +326,22 @@ StudyData load_study(const fs::path& dir) {
             r.evaluations_to_target = static_cast<std::int64_t>(*e);
         r.best_x = split_numbers(runs, row, col("best_x"));
         bool all_truths = true;
-        for (std::size_t c = first_parameter; c < message_column; c += 3) {
+        bool all_optima = true;
+        for (std::size_t c = first_parameter; c < message_column; c += per_parameter) {
             if (runs.rows[row][c].empty())
                 continue;
             r.parameter_names.push_back(runs.header[c]);
             const auto truth = runs.optional_number(row, c + 1);
             all_truths = all_truths && truth.has_value();
             r.true_parameters.push_back(truth.value_or(0.0));
+            const auto optimum = runs.optional_number(row, c + 2);
+            all_optima = all_optima && optimum.has_value();
+            r.x_opt.push_back(optimum.value_or(0.0));
         }
         if (!all_truths)
             r.true_parameters.clear();
+        if (!all_optima)
+            r.x_opt.clear();
         r.message = runs.rows[row][message_column];
         if (index.count(r.run_id) != 0)
             throw std::runtime_error(runs.path.string() + ", line " + std::to_string(runs.line_numbers[row]) +

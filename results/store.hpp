@@ -44,7 +44,8 @@ public:
     // - If it holds a finished study, or an unfinished one of another study, this throws
     //   std::runtime_error unless `overwrite` is set, in which case those files are replaced.
     // `parameter_columns` is the union of the named parameters of the study's problems, in order:
-    // runs.csv gets the columns P, P_true and P_err_pct for each.
+    // runs.csv gets the columns P, P_true, P_opt and P_err_pct for each (P_opt: the coordinate of
+    // the known optimum, e.g. the least-squares estimate; P_err_pct: 100 (P - P_true) / P_true).
     StudyWriter(std::filesystem::path dir, std::string study_text, std::string context_text,
                 std::vector<std::string> parameter_columns, bool overwrite);
 

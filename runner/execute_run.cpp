@@ -23,8 +23,11 @@ RunRecord execute_run(const RunRequest& request) {
     record.parameter_names = problem.parameter_names();
     if (const auto truth = problem.true_parameters())
         record.true_parameters = to_vector(*truth);
-    if (const auto optimum = problem.known_optimum())
+    if (const auto optimum = problem.known_optimum()) {
         record.f_opt = optimum->f;
+        if (optimum->x)
+            record.x_opt = to_vector(*optimum->x);
+    }
 
     try {
         ObjectiveOptions options;

@@ -32,6 +32,7 @@ RunRecord make_record(std::int64_t id) {
     r.best_x = {0.33, 0.00324 + 1e-7 * static_cast<double>(id), 0.00324, 0.0776};
     r.parameter_names = {"Rs", "Ld", "Lq", "psi"};
     r.true_parameters = {0.33, 0.00324, 0.00324, 0.0776};
+    r.x_opt = {0.331, 0.003241, 0.003239, 0.07761};
     for (std::int64_t i = 0; i <= 3; ++i)
         r.curve.push_back({i, 50 * (i + 1), 1.0 / static_cast<double>(i + 1), r.best_x});
     r.checkpoints = {{1, 9.0}, {2, 5.0}, {100 + id, r.best_f}};
@@ -67,6 +68,7 @@ TEST(Store, RoundTripsRecordsExactlyAndSortsByRunId) {
         EXPECT_EQ(got.best_x, expected.best_x);
         EXPECT_EQ(got.parameter_names, expected.parameter_names);
         EXPECT_EQ(got.true_parameters, expected.true_parameters);
+        EXPECT_EQ(got.x_opt, expected.x_opt);
         ASSERT_EQ(got.curve.size(), 4u);
         EXPECT_EQ(got.curve[2].best_f, 1.0 / 3.0);
         EXPECT_EQ(got.curve[2].best_x, expected.best_x);
