@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Quick start 1: the paper's study end to end — ITLBO vs TLBO vs PSO identifying the PMSM at
+# 2500 rpm / 2 N m (NP = 50, 150 iterations, 20 seeds). Prints Tables 2 and 3 beside the paper's
+# numbers and writes the study directory (tables, curve data, figures) to studies/paper/.
+# Extra arguments go to `mhbench run` (e.g. --threads 1, --out DIR).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+bash scripts/build.sh >&2
+exec build/release/runner/mhbench run --study paper --out studies/paper --overwrite "$@"

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian packages mhbench needs, if any are missing (as root, or through sudo).
+# Every dependency comes from Debian: nothing is downloaded at build time.
+set -euo pipefail
+
+packages=(
+    build-essential cmake git pkg-config # compiler and build
+    libeigen3-dev                        # linear algebra
+    libtbb-dev                           # oneTBB: the parallel runner
+    libnlopt-cxx-dev                     # NLopt baselines (C++ API)
+    libboost-dev                         # Boost.Math: distributions and p-values
+    libboost-program-options-dev         # the CLI and study files
+    libgtest-dev libgmock-dev            # GoogleTest
+    libbenchmark-dev                     # Google Benchmark
+    python3-matplotlib                   # figures (Debian's /usr/bin/python3)
+)
+
+missing=()
+for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$p")
+    fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "mhbench set-up: installing ${missing[*]}" >&2
+if [ "$(id -u)" -eq 0 ]; then
+    sudo=()
+elif command -v sudo >/dev/null 2>&1; then
+    sudo=(sudo)
+else
+    echo "mhbench set-up: these packages are missing and neither root nor sudo is available: ${missing[*]}" >&2
+    exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
