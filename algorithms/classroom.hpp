@@ -22,7 +22,8 @@ public:
     // Draws `np` learners uniformly in the box (eq. 5: learner by learner, coordinate by
     // coordinate) and evaluates each as it is drawn: np evaluations.
     Classroom(Objective& objective, Rng& rng, Eigen::Index np)
-        : x_(objective.dimension(), np), f_(np), sum_(objective.dimension()) {
+        : x_(objective.dimension(), np), f_(np), sum_(objective.dimension()),
+          inverse_size_(1.0 / static_cast<double>(np)) {
         for (Eigen::Index i = 0; i < np; ++i) {
             Eigen::VectorXd learner = uniform_point(objective.bounds(), rng);
             f_[i] = objective.evaluate(learner);
@@ -45,8 +46,9 @@ public:
     // "Mean" of eqs. 6 and 8, coordinate k, of the class as it is now. It comes from a running
     // sum updated at every replacement (O(D) instead of O(NP D) per learner); resum() makes it
     // exact again, and both algorithms call it at the start of every teacher phase, so rounding
-    // drift never outlives one phase.
-    [[nodiscard]] double mean(Eigen::Index k) const { return sum_[k] / static_cast<double>(x_.cols()); }
+    // drift never outlives one phase. (Multiplying by 1/NP rather than dividing by NP: a division
+    // per coordinate and learner was the largest cost of TLBO's own code.)
+    [[nodiscard]] double mean(Eigen::Index k) const { return sum_[k] * inverse_size_; }
 
     void resum() { sum_ = x_.rowwise().sum(); }
 
@@ -76,6 +78,7 @@ private:
     Eigen::MatrixXd x_;    // D x NP, one learner per column (contiguous)
     Eigen::VectorXd f_;    // fitness of each learner
     Eigen::VectorXd sum_;  // running sum of the columns of x_
+    double inverse_size_;  // 1 / NP
     Eigen::Index teacher_ = 0;
 };
 

@@ -11,8 +11,9 @@
 // The paper gives nothing beyond w, c1, c2 and NP; our choices, each the plainest one:
 //   - initial positions uniform in the box (as eq. 5 for TLBO); initial velocities zero
 //     (A. Engelbrecht (2012), "Particle swarm optimization: Velocity initialization", IEEE CEC,
-//     finds zero initial velocity as good as or better than random ones, and it keeps the first
-//     move inside the box);
+//     recommends zero or small random initial velocities: large random ones send particles out
+//     of the box in the first iterations). From zero velocity the first move of each particle
+//     is towards the global best only;
 //   - positions are clamped to the box (the Objective's clamp policy, "clamp to bounds" in
 //     DESIGN.md); the velocity is left as it is;
 //   - no velocity clamp by default (vmax = 0); vmax > 0 limits each velocity component to

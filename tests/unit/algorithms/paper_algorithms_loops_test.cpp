@@ -1,6 +1,6 @@
 // The paper's loops read literally (DESIGN.md section 4), checked on the points the algorithms
-// actually evaluate (recorded in order by RecordingProblem): TLBO against a naive reference
-// written from the definition; ITLBO's stepwise learning changes one component at a time and
+// actually evaluate (recorded in order by RecordingProblem): TLBO and ITLBO against a plain
+// reference written from the papers; ITLBO's stepwise learning changes one component at a time and
 // keeps it only if it improves; ITLBO's mutation evaluates lo + hi - X_i of the learner as
 // learning left it; PSO's first move from zero velocity heads for the global best.
 #include <gtest/gtest.h>
@@ -20,14 +20,30 @@ void expect_near_points(const Eigen::VectorXd& got, const Eigen::VectorXd& want,
         EXPECT_NEAR(got[k], want[k], 1e-12 * (1.0 + std::abs(want[k]))) << "evaluation " << n << ", coordinate " << k;
 }
 
-// A deliberately plain TLBO written from Rao et al. (2011) as DESIGN.md section 4 reads it: in
-// place, index order; for every learner Mean is recomputed from the whole class as it is now and
-// the teacher is the current best (lowest index among equals); clamping as the Objective's.
-// Random draws in the order tlbo.cpp documents. Returns every point evaluated, in order.
-std::vector<Eigen::VectorXd> reference_tlbo(const Problem& problem, std::uint64_t seed, int np, int iterations) {
+// What the plain reference below does beyond TLBO: ITLBO's switches and options.
+struct Switches {
+    bool tutorial = false;
+    bool stepwise = false;
+    bool obl = false;
+    double p = 0.1;
+    bool obl_greedy = false;
+    bool population_bounds = false;
+};
+
+// A deliberately plain TLBO / ITLBO written from the papers (Rao et al. 2011; Li, Wang, Ji 2017,
+// eqs. 5-10 and the pseudo-code of section 2.2.2) as DESIGN.md section 4 reads them: in place,
+// index order; for every learner Mean is recomputed from the whole class as it is now and the
+// teacher is the current best (lowest index among equals); clamping as the Objective's. Random
+// draws in the order tlbo.cpp and itlbo.cpp document, the mutation coins from the stream
+// itlbo.cpp derives. Returns every point evaluated, in order.
+std::vector<Eigen::VectorXd> reference_run(const Problem& problem, std::uint64_t seed, int np, int iterations,
+                                           Switches s) {
     Rng rng(seed);
+    Rng peek = rng;
+    Rng coins(mix64(peek.next() ^ stable_hash("itlbo/opposition-based mutation")));
     const Box& box = problem.bounds();
     const Eigen::Index d = problem.dimension();
+    const auto n = static_cast<std::size_t>(np);
     std::vector<Eigen::VectorXd> x;
     std::vector<double> f;
     std::vector<Eigen::VectorXd> points;
@@ -36,62 +52,116 @@ std::vector<Eigen::VectorXd> reference_tlbo(const Problem& problem, std::uint64_
         points.push_back(y);
         return problem.evaluate(y);
     };
-    for (int i = 0; i < np; ++i) {
+    const auto greedy = [&](std::size_t i, Eigen::VectorXd& y) {
+        const double fy = evaluate(y);
+        if (fy < f[i]) {
+            x[i] = y;
+            f[i] = fy;
+        }
+    };
+    for (std::size_t i = 0; i < n; ++i) {
         Eigen::VectorXd y(d);
         for (Eigen::Index k = 0; k < d; ++k)
             y[k] = box.lower[k] + rng.uniform() * (box.upper[k] - box.lower[k]);
         f.push_back(evaluate(y));
         x.push_back(y);
     }
-    const auto try_replace = [&](int i, Eigen::VectorXd& y) {
-        const double fy = evaluate(y);
-        if (fy < f[static_cast<std::size_t>(i)]) {
-            x[static_cast<std::size_t>(i)] = y;
-            f[static_cast<std::size_t>(i)] = fy;
-        }
-    };
     for (int it = 0; it < iterations; ++it) {
-        for (int i = 0; i < np; ++i) {
+        for (std::size_t i = 0; i < n; ++i) { // teaching: eq. 6, or eq. 8 with tutorial
             const double tf = std::round(1.0 + rng.uniform());
             Eigen::VectorXd mean = Eigen::VectorXd::Zero(d);
-            std::size_t teacher = 0;
-            for (std::size_t m = 0; m < x.size(); ++m) {
+            std::size_t t = 0;
+            for (std::size_t m = 0; m < n; ++m) {
                 mean += x[m] / np;
-                if (f[m] < f[teacher])
-                    teacher = m;
+                if (f[m] < f[t])
+                    t = m;
             }
             Eigen::VectorXd y(d);
-            for (Eigen::Index k = 0; k < d; ++k)
-                y[k] = x[static_cast<std::size_t>(i)][k] + rng.uniform() * (x[teacher][k] - tf * mean[k]);
-            try_replace(i, y);
+            for (Eigen::Index k = 0; k < d; ++k) {
+                const double r1 = rng.uniform();
+                const double r2 = s.tutorial ? rng.uniform() : 0.0;
+                y[k] = x[i][k] + r1 * (x[t][k] - tf * mean[k]) + r2 * (x[t][k] - x[i][k]);
+            }
+            greedy(i, y);
         }
-        for (int i = 0; i < np; ++i) {
-            const auto j = static_cast<std::size_t>(
-                rng.below_except(static_cast<std::uint64_t>(np), static_cast<std::uint64_t>(i)));
-            const Eigen::VectorXd& xi = x[static_cast<std::size_t>(i)];
-            const double direction = f[static_cast<std::size_t>(i)] < f[j] ? 1.0 : -1.0;
-            Eigen::VectorXd y(d);
-            for (Eigen::Index k = 0; k < d; ++k)
-                y[k] = xi[k] + rng.uniform() * direction * (xi[k] - x[j][k]);
-            try_replace(i, y);
+        for (std::size_t i = 0; i < n; ++i) { // learning: eq. 7, or eq. 9 with stepwise
+            const auto j = static_cast<std::size_t>(rng.below_except(n, i));
+            if (!s.stepwise) {
+                const double direction = f[i] < f[j] ? 1.0 : -1.0;
+                Eigen::VectorXd y(d);
+                for (Eigen::Index k = 0; k < d; ++k)
+                    y[k] = x[i][k] + rng.uniform() * direction * (x[i][k] - x[j][k]);
+                greedy(i, y);
+                continue;
+            }
+            for (Eigen::Index k = 0; k < d; ++k) {
+                const double r = rng.uniform();
+                const double direction = f[i] < f[j] ? 1.0 : -1.0;
+                Eigen::VectorXd y = x[i];
+                y[k] = x[i][k] + r * direction * (x[i][k] - x[j][k]);
+                greedy(i, y);
+            }
+        }
+        if (!s.obl) // mutation: eq. 10
+            continue;
+        Eigen::VectorXd lo = box.lower;
+        Eigen::VectorXd hi = box.upper;
+        if (s.population_bounds) {
+            lo = x[0];
+            hi = x[0];
+            for (const auto& xm : x) {
+                lo = lo.cwiseMin(xm);
+                hi = hi.cwiseMax(xm);
+            }
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!(coins.uniform() < s.p))
+                continue;
+            Eigen::VectorXd y = lo + hi - x[i];
+            const double fy = evaluate(y);
+            if (!s.obl_greedy || fy < f[i]) {
+                x[i] = y;
+                f[i] = fy;
+            }
         }
     }
     return points;
 }
 
-// TLBO evaluates the same points, in the same order, as the plain reference above (to 1e-12
-// relative): initialisation, per-learner Mean and teacher, in-place partners, greedy acceptance.
-TEST(PaperAlgorithmLoops, TlboMatchesAPlainReferenceImplementation) {
-    const auto s = sphere(3);
-    const Rosenbrock r(4);
-    for (const Problem* inner : {static_cast<const Problem*>(s.get()), static_cast<const Problem*>(&r)})
+void expect_same_points(const std::string& algorithm, const Problem& inner, std::uint64_t seed, int iterations,
+                        const Switches& s) {
+    const RecordingProblem recorder(inner);
+    run(algorithm, recorder, seed, test::iterations(iterations));
+    const auto want = reference_run(inner, seed, 6, iterations, s);
+    ASSERT_EQ(recorder.points.size(), want.size()) << algorithm;
+    for (std::size_t n = 0; n < want.size(); ++n)
+        expect_near_points(recorder.points[n], want[n], n);
+}
+
+// TLBO and ITLBO evaluate the same points, in the same order, as the plain reference above (to
+// 1e-12 relative): initialisation, per-learner Mean and teacher, in-place partners, greedy
+// acceptance, and each of ITLBO's switches and options. NP = 6 on 3-D sphere and 4-D Rosenbrock.
+TEST(PaperAlgorithmLoops, TlboAndItlboMatchAPlainReferenceImplementation) {
+    const auto sphere3 = sphere(3);
+    const Rosenbrock rosenbrock4(4);
+    Switches all;
+    all.tutorial = all.stepwise = all.obl = true;
+    Switches greedy_half = all;
+    greedy_half.p = 0.5;
+    greedy_half.obl_greedy = true;
+    Switches population_half = all;
+    population_half.p = 0.5;
+    population_half.population_bounds = true;
+    Switches tutorial_mutation;
+    tutorial_mutation.tutorial = tutorial_mutation.obl = true;
+    tutorial_mutation.p = 0.3;
+    for (const Problem* inner : {static_cast<const Problem*>(sphere3.get()), static_cast<const Problem*>(&rosenbrock4)})
         for (const std::uint64_t seed : {1ULL, 8ULL}) {
-            const RecordingProblem recorder(*inner);
-            run("tlbo:np=6", recorder, seed, iterations(8));
-            const auto want = reference_tlbo(*inner, seed, 6, 8);
-            ASSERT_EQ(recorder.points.size(), want.size());
-            for (std::size_t n = 0; n < want.size(); ++n)
-                expect_near_points(recorder.points[n], want[n], n);
+            expect_same_points("tlbo:np=6", *inner, seed, 8, Switches{});
+            expect_same_points("itlbo:np=6", *inner, seed, 6, all);
+            expect_same_points("itlbo:np=6,p=0.5,obl_greedy=on", *inner, seed, 6, greedy_half);
+            expect_same_points("itlbo:np=6,p=0.5,obl_bounds=population", *inner, seed, 6, population_half);
+            expect_same_points("itlbo:np=6,stepwise=off,p=0.3", *inner, seed, 6, tutorial_mutation);
         }
 }
 
