@@ -9,11 +9,11 @@
 // TLBO, bit for bit" compares two separate codings and can fail.
 #pragma once
 
-#include <Eigen/Core>
-
 #include "algorithms/sampling.hpp"
 #include "problems/objective.hpp"
 #include "problems/rng.hpp"
+
+#include <Eigen/Core>
 
 namespace mhb::detail {
 
@@ -75,10 +75,10 @@ private:
         teacher_ = best;
     }
 
-    Eigen::MatrixXd x_;    // D x NP, one learner per column (contiguous)
-    Eigen::VectorXd f_;    // fitness of each learner
-    Eigen::VectorXd sum_;  // running sum of the columns of x_
-    double inverse_size_;  // 1 / NP
+    Eigen::MatrixXd x_;   // D x NP, one learner per column (contiguous)
+    Eigen::VectorXd f_;   // fitness of each learner
+    Eigen::VectorXd sum_; // running sum of the columns of x_
+    double inverse_size_; // 1 / NP
     Eigen::Index teacher_ = 0;
 };
 

@@ -39,11 +39,11 @@
 //
 // Defaults, from the paper: NP = 50 (section 4.1), all three switches on, p = 0.1 (section
 // 2.2.3, "found best after many trials"), unconditional replacement with static bounds.
-#include <cmath>
-#include <string>
-
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/classroom.hpp"
+
+#include <cmath>
+#include <string>
 
 namespace mhb {
 namespace {
@@ -116,7 +116,8 @@ private:
 
     // Eq. 9 and the pseudo-code of section 2.2.2, literally: one component at a time, each
     // change evaluated and kept only if it improves the learner. D evaluations per learner.
-    static void stepwise_learning(detail::Classroom& c, Objective& objective, Rng& rng, Eigen::VectorXd& trial) {
+    static void stepwise_learning(detail::Classroom& c, Objective& objective, Rng& rng,
+                                  Eigen::VectorXd& trial) {
         const auto np = static_cast<std::uint64_t>(c.size());
         for (Eigen::Index i = 0; i < c.size(); ++i) {
             const auto j = static_cast<Eigen::Index>(rng.below_except(np, static_cast<std::uint64_t>(i)));
@@ -139,8 +140,8 @@ private:
     }
 
     // Eq. 10: X_i <- lo + hi - X_i with probability p, for each learner in index order.
-    void opposition_mutation(detail::Classroom& c, Objective& objective, Rng& mutation_rng, Eigen::VectorXd& trial,
-                             Eigen::VectorXd& lo, Eigen::VectorXd& hi) const {
+    void opposition_mutation(detail::Classroom& c, Objective& objective, Rng& mutation_rng,
+                             Eigen::VectorXd& trial, Eigen::VectorXd& lo, Eigen::VectorXd& hi) const {
         if (s_.obl_population_bounds) {
             lo = c.positions().rowwise().minCoeff();
             hi = c.positions().rowwise().maxCoeff();
@@ -167,16 +168,21 @@ void register_itlbo(AlgorithmRegistry& registry) {
          "opposition-based mutation, each a switch; about NP (D + 1.1) evaluations per iteration",
          "Li, Wang, Ji (2017), Permanent magnet synchronous motor parameter identification based on improved "
          "teaching-learning-based optimization, Journal of System Simulation 29(2):393-401",
-         {ParameterInfo::integer("np", 50, 2, 100000, "population (learners); 50 as in the paper, section 4.1"),
+         {ParameterInfo::integer("np", 50, 2, 100000,
+                                 "population (learners); 50 as in the paper, section 4.1"),
           ParameterInfo::boolean("tutorial", true, "tutorial teaching, eq. 8 (off: TLBO's eq. 6)"),
-          ParameterInfo::boolean("stepwise", true,
-                                 "subject-stepwise learning, eq. 9: D evaluations per learner (off: TLBO's eq. 7)"),
+          ParameterInfo::boolean(
+              "stepwise", true,
+              "subject-stepwise learning, eq. 9: D evaluations per learner (off: TLBO's eq. 7)"),
           ParameterInfo::boolean("obl", true, "opposition-based mutation after learning, eq. 10"),
-          ParameterInfo::real("p", 0.1, 0.0, 1.0, "mutation probability per learner and iteration; 0.1 as in the paper"),
-          ParameterInfo::boolean("obl_greedy", false,
-                                 "keep an opposite point only if it is better (off: replace, as the paper does)"),
-          ParameterInfo::choice("obl_bounds", "static", {"static", "population"},
-                                "opposite within the problem's box (the paper) or the class's current min/max")},
+          ParameterInfo::real("p", 0.1, 0.0, 1.0,
+                              "mutation probability per learner and iteration; 0.1 as in the paper"),
+          ParameterInfo::boolean(
+              "obl_greedy", false,
+              "keep an opposite point only if it is better (off: replace, as the paper does)"),
+          ParameterInfo::choice(
+              "obl_bounds", "static", {"static", "population"},
+              "opposite within the problem's box (the paper) or the class's current min/max")},
          [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
              ItlboSettings s;
              s.np = static_cast<Eigen::Index>(p.integer("np"));

@@ -23,10 +23,10 @@
 //   - pbest_i is replaced only by a strictly better point.
 // Random draws, in order: initial positions (particle by particle, coordinate by coordinate);
 // per particle move, r1 then r2 for each coordinate.
-#include <algorithm>
-
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/sampling.hpp"
+
+#include <algorithm>
 
 namespace mhb {
 namespace {
@@ -103,26 +103,29 @@ private:
 } // namespace
 
 void register_pso(AlgorithmRegistry& registry) {
-    registry.add({"pso",
-                  "global-best particle swarm optimisation with inertia weight, the settings of Li, Wang, Ji "
-                  "(2017); NP evaluations per iteration",
-                  "Kennedy, Eberhart (1995), Proc. ICNN 4:1942-1948; inertia weight: Shi, Eberhart (1998), "
-                  "Proc. IEEE ICEC:69-73",
-                  {ParameterInfo::integer("np", 50, 2, 100000, "swarm size; 50 as in Li, Wang, Ji (2017), section 4.1"),
-                   ParameterInfo::real("w", 0.5, 0.0, 1.0, "inertia weight; 0.5 as in Li, Wang, Ji (2017)"),
-                   ParameterInfo::real("c1", 2.0, 0.0, 4.0, "cognitive coefficient; 2 as in Li, Wang, Ji (2017)"),
-                   ParameterInfo::real("c2", 2.0, 0.0, 4.0, "social coefficient; 2 as in Li, Wang, Ji (2017)"),
-                   ParameterInfo::real("vmax", 0.0, 0.0, 1.0,
-                                       "velocity clamp as a fraction of the box width; 0: none (the paper gives none)")},
-                  [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
-                      PsoSettings s;
-                      s.np = static_cast<Eigen::Index>(p.integer("np"));
-                      s.w = p.real("w");
-                      s.c1 = p.real("c1");
-                      s.c2 = p.real("c2");
-                      s.vmax = p.real("vmax");
-                      return std::make_unique<Pso>(s);
-                  }});
+    registry.add(
+        {"pso",
+         "global-best particle swarm optimisation with inertia weight, the settings of Li, Wang, Ji "
+         "(2017); NP evaluations per iteration",
+         "Kennedy, Eberhart (1995), Proc. ICNN 4:1942-1948; inertia weight: Shi, Eberhart (1998), "
+         "Proc. IEEE ICEC:69-73",
+         {ParameterInfo::integer("np", 50, 2, 100000,
+                                 "swarm size; 50 as in Li, Wang, Ji (2017), section 4.1"),
+          ParameterInfo::real("w", 0.5, 0.0, 1.0, "inertia weight; 0.5 as in Li, Wang, Ji (2017)"),
+          ParameterInfo::real("c1", 2.0, 0.0, 4.0, "cognitive coefficient; 2 as in Li, Wang, Ji (2017)"),
+          ParameterInfo::real("c2", 2.0, 0.0, 4.0, "social coefficient; 2 as in Li, Wang, Ji (2017)"),
+          ParameterInfo::real(
+              "vmax", 0.0, 0.0, 1.0,
+              "velocity clamp as a fraction of the box width; 0: none (the paper gives none)")},
+         [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
+             PsoSettings s;
+             s.np = static_cast<Eigen::Index>(p.integer("np"));
+             s.w = p.real("w");
+             s.c1 = p.real("c1");
+             s.c2 = p.real("c2");
+             s.vmax = p.real("vmax");
+             return std::make_unique<Pso>(s);
+         }});
 }
 
 } // namespace mhb

@@ -20,10 +20,10 @@
 //
 // Default: NP = 50, the paper's population (section 4.1). Bounds are repaired by clamping
 // (the Objective's default, as in the paper).
-#include <cmath>
-
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/classroom.hpp"
+
+#include <cmath>
 
 namespace mhb {
 namespace {
@@ -67,15 +67,16 @@ private:
 } // namespace
 
 void register_tlbo(AlgorithmRegistry& registry) {
-    registry.add({"tlbo",
-                  "teaching-learning-based optimisation: teacher phase then learner phase, greedy, "
-                  "in place; 2 NP evaluations per iteration",
-                  "Rao, Savsani, Vakharia (2011), Computer-Aided Design 43(3):303-315",
-                  {ParameterInfo::integer("np", 50, 2, 100000,
-                                          "population (learners); 50 as in Li, Wang, Ji (2017), section 4.1")},
-                  [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
-                      return std::make_unique<Tlbo>(static_cast<Eigen::Index>(p.integer("np")));
-                  }});
+    registry.add(
+        {"tlbo",
+         "teaching-learning-based optimisation: teacher phase then learner phase, greedy, "
+         "in place; 2 NP evaluations per iteration",
+         "Rao, Savsani, Vakharia (2011), Computer-Aided Design 43(3):303-315",
+         {ParameterInfo::integer("np", 50, 2, 100000,
+                                 "population (learners); 50 as in Li, Wang, Ji (2017), section 4.1")},
+         [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
+             return std::make_unique<Tlbo>(static_cast<Eigen::Index>(p.integer("np")));
+         }});
 }
 
 } // namespace mhb

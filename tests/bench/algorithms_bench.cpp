@@ -4,13 +4,12 @@
 // optimisers' own overhead can be compared with the cost of the problems they solve.
 //
 //   build/release/tests/bench/algorithms_bench --benchmark_min_time=0.5
-#include <benchmark/benchmark.h>
-
-#include <string>
-
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem_registry.hpp"
+
+#include <benchmark/benchmark.h>
+#include <string>
 
 namespace {
 
@@ -29,8 +28,8 @@ void whole_run(benchmark::State& state, const std::string& algorithm) {
         evaluations += objective.evaluations();
         benchmark::DoNotOptimize(objective.best_f());
     }
-    state.counters["time_per_evaluation"] =
-        benchmark::Counter(static_cast<double>(evaluations), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["time_per_evaluation"] = benchmark::Counter(
+        static_cast<double>(evaluations), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 } // namespace

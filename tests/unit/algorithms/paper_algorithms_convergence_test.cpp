@@ -6,16 +6,17 @@
 //   PSO   400 iterations (20050 evaluations):                     worst 2e-18;        asserted 1e-12.
 // A regression that breaks a phase (a wrong sign, a lost greedy step) misses these by many
 // orders of magnitude.
-#include <gtest/gtest.h>
-
 #include "tests/unit/algorithms/paper_algorithms_support.hpp"
+
+#include <gtest/gtest.h>
 
 namespace mhb::test {
 namespace {
 
 void expect_never_worsens(const Outcome& o, const std::string& what) {
     for (std::size_t t = 1; t < o.iterations_trace.size(); ++t)
-        EXPECT_LE(o.iterations_trace[t].best_f, o.iterations_trace[t - 1].best_f) << what << " iteration " << t;
+        EXPECT_LE(o.iterations_trace[t].best_f, o.iterations_trace[t - 1].best_f)
+            << what << " iteration " << t;
     for (std::size_t t = 1; t < o.checkpoints.size(); ++t)
         EXPECT_LE(o.checkpoints[t].best_f, o.checkpoints[t - 1].best_f) << what << " checkpoint " << t;
     ASSERT_FALSE(o.iterations_trace.empty());
@@ -34,11 +35,17 @@ void expect_converges(const std::string& algorithm, std::int64_t iteration_budge
     }
 }
 
-TEST(PaperAlgorithmConvergence, TlboReaches1em20OnSphere10In150Iterations) { expect_converges("tlbo", 150, 1e-20); }
+TEST(PaperAlgorithmConvergence, TlboReaches1em20OnSphere10In150Iterations) {
+    expect_converges("tlbo", 150, 1e-20);
+}
 
-TEST(PaperAlgorithmConvergence, ItlboReaches1em20OnSphere10In50Iterations) { expect_converges("itlbo", 50, 1e-20); }
+TEST(PaperAlgorithmConvergence, ItlboReaches1em20OnSphere10In50Iterations) {
+    expect_converges("itlbo", 50, 1e-20);
+}
 
-TEST(PaperAlgorithmConvergence, PsoReaches1em12OnSphere10In400Iterations) { expect_converges("pso", 400, 1e-12); }
+TEST(PaperAlgorithmConvergence, PsoReaches1em12OnSphere10In400Iterations) {
+    expect_converges("pso", 400, 1e-12);
+}
 
 // The options that the paper leaves open must converge too (same budget as ITLBO's default).
 TEST(PaperAlgorithmConvergence, ItlboOptionsConvergeOnSphere10) {

@@ -3,11 +3,10 @@
 // reference written from the papers; ITLBO's stepwise learning changes one component at a time and
 // keeps it only if it improves; ITLBO's mutation evaluates lo + hi - X_i of the learner as
 // learning left it; PSO's first move from zero velocity heads for the global best.
-#include <gtest/gtest.h>
+#include "tests/unit/algorithms/paper_algorithms_support.hpp"
 
 #include <cmath>
-
-#include "tests/unit/algorithms/paper_algorithms_support.hpp"
+#include <gtest/gtest.h>
 
 namespace mhb::test {
 namespace {
@@ -17,7 +16,8 @@ namespace {
 void expect_near_points(const Eigen::VectorXd& got, const Eigen::VectorXd& want, std::size_t n) {
     ASSERT_EQ(got.size(), want.size());
     for (Eigen::Index k = 0; k < got.size(); ++k)
-        EXPECT_NEAR(got[k], want[k], 1e-12 * (1.0 + std::abs(want[k]))) << "evaluation " << n << ", coordinate " << k;
+        EXPECT_NEAR(got[k], want[k], 1e-12 * (1.0 + std::abs(want[k])))
+            << "evaluation " << n << ", coordinate " << k;
 }
 
 // What the plain reference below does beyond TLBO: ITLBO's switches and options.
@@ -128,8 +128,8 @@ std::vector<Eigen::VectorXd> reference_run(const Problem& problem, std::uint64_t
     return points;
 }
 
-void expect_same_points(const std::string& algorithm, const Problem& inner, std::uint64_t seed, int iterations,
-                        const Switches& s) {
+void expect_same_points(const std::string& algorithm, const Problem& inner, std::uint64_t seed,
+                        int iterations, const Switches& s) {
     const RecordingProblem recorder(inner);
     run(algorithm, recorder, seed, test::iterations(iterations));
     const auto want = reference_run(inner, seed, 6, iterations, s);
@@ -155,7 +155,8 @@ TEST(PaperAlgorithmLoops, TlboAndItlboMatchAPlainReferenceImplementation) {
     Switches tutorial_mutation;
     tutorial_mutation.tutorial = tutorial_mutation.obl = true;
     tutorial_mutation.p = 0.3;
-    for (const Problem* inner : {static_cast<const Problem*>(sphere3.get()), static_cast<const Problem*>(&rosenbrock4)})
+    for (const Problem* inner :
+         {static_cast<const Problem*>(sphere3.get()), static_cast<const Problem*>(&rosenbrock4)})
         for (const std::uint64_t seed : {1ULL, 8ULL}) {
             expect_same_points("tlbo:np=6", *inner, seed, 8, Switches{});
             expect_same_points("itlbo:np=6", *inner, seed, 6, all);
@@ -236,8 +237,8 @@ TEST(PaperAlgorithmLoops, MutationEvaluatesTheOppositeOfEachLearner) {
     for (const bool greedy : {false, true})
         for (const bool population : {false, true}) {
             const RecordingProblem rec(inner);
-            run(std::string("itlbo:np=6,tutorial=off,stepwise=off,p=1,obl_greedy=") + (greedy ? "on" : "off") +
-                    ",obl_bounds=" + (population ? "population" : "static"),
+            run(std::string("itlbo:np=6,tutorial=off,stepwise=off,p=1,obl_greedy=") +
+                    (greedy ? "on" : "off") + ",obl_bounds=" + (population ? "population" : "static"),
                 rec, 9, iterations(4));
             ASSERT_EQ(rec.points.size(), np + 4 * 3 * np);
             TrackedClass c(rec, np);

@@ -3,15 +3,14 @@
 // it is asked to evaluate (so tests can check what an optimiser evaluated, in order).
 #pragma once
 
-#include <gtest/gtest.h>
-
-#include <cstdint>
-#include <string>
-#include <vector>
-
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem_registry.hpp"
+
+#include <cstdint>
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
 
 namespace mhb::test {
 
@@ -32,13 +31,16 @@ inline Outcome run(const std::string& algorithm, const Problem& problem, std::ui
     Objective objective(problem, budget, optimizer->bound_policy(), options);
     Rng rng(seed);
     run_to_budget(*optimizer, objective, rng);
-    return {objective.best_f(),          objective.best_x(),
-            objective.evaluations(),     objective.iterations(),
-            objective.iteration_trace(), objective.checkpoint_trace()};
+    return {objective.best_f(),     objective.best_x(),          objective.evaluations(),
+            objective.iterations(), objective.iteration_trace(), objective.checkpoint_trace()};
 }
 
-inline Budget iterations(std::int64_t n) { return Budget{std::nullopt, n, std::nullopt}; }
-inline Budget evaluations(std::int64_t n) { return Budget{n, std::nullopt, std::nullopt}; }
+inline Budget iterations(std::int64_t n) {
+    return Budget{std::nullopt, n, std::nullopt};
+}
+inline Budget evaluations(std::int64_t n) {
+    return Budget{n, std::nullopt, std::nullopt};
+}
 
 // Bit-for-bit equality of two outcomes: best f and x, the whole iteration trace (with best x
 // at every iteration) and the checkpoint trace.

@@ -1,11 +1,10 @@
 // The paper's algorithms (TLBO, ITLBO of Li, Wang, Ji 2017, PSO): ITLBO with its switches off
 // is TLBO bit for bit; evaluations per iteration follow the formulas of DESIGN.md section 4;
 // each switch changes the run; runs are reproducible; bad parameters are clear errors.
-#include <gtest/gtest.h>
-
-#include <stdexcept>
-
 #include "tests/unit/algorithms/paper_algorithms_support.hpp"
+
+#include <gtest/gtest.h>
+#include <stdexcept>
 
 namespace mhb::test {
 namespace {
@@ -25,7 +24,8 @@ TEST(PaperAlgorithms, ItlboWithAllSwitchesOffIsTlboBitForBit) {
             for (const std::uint64_t seed : {1ULL, 7ULL, 2024ULL})
                 for (const std::string np : {"50", "7"}) {
                     const Outcome tlbo = run("tlbo:np=" + np, *problem, seed, budget);
-                    const Outcome itlbo = run(std::string(itlbo_all_off) + ",np=" + np, *problem, seed, budget);
+                    const Outcome itlbo =
+                        run(std::string(itlbo_all_off) + ",np=" + np, *problem, seed, budget);
                     EXPECT_TRUE(identical(tlbo, itlbo))
                         << problem->name() << " seed " << seed << " np " << np << ": tlbo " << tlbo.best_f
                         << ", itlbo " << itlbo.best_f;
@@ -41,7 +41,8 @@ std::vector<std::int64_t> evaluations_per_iteration(const Outcome& o) {
     return out;
 }
 
-void expect_costs(const std::string& algorithm, const Problem& problem, std::int64_t np, std::int64_t per_iteration) {
+void expect_costs(const std::string& algorithm, const Problem& problem, std::int64_t np,
+                  std::int64_t per_iteration) {
     const Outcome o = run(algorithm, problem, 3, iterations(12));
     ASSERT_EQ(o.iterations_trace.size(), 13u) << algorithm;
     EXPECT_EQ(o.iterations_trace[0].evaluations, np) << algorithm << ": initialisation";
@@ -88,8 +89,8 @@ TEST(PaperAlgorithms, EachSwitchAloneChangesTheRun) {
     const Rosenbrock r(5);
     for (const Problem* problem : {static_cast<const Problem*>(p.get()), static_cast<const Problem*>(&r)}) {
         const Outcome tlbo = run("tlbo", *problem, 5, iterations(30));
-        for (const char* alone : {"itlbo:stepwise=off,obl=off", "itlbo:tutorial=off,obl=off",
-                                  "itlbo:tutorial=off,stepwise=off"})
+        for (const char* alone :
+             {"itlbo:stepwise=off,obl=off", "itlbo:tutorial=off,obl=off", "itlbo:tutorial=off,stepwise=off"})
             EXPECT_FALSE(identical(tlbo, run(alone, *problem, 5, iterations(30)))) << alone;
         const Outcome paper = run("itlbo:p=0.3", *problem, 5, iterations(30));
         for (const char* variant : {"itlbo:p=0.3,obl_greedy=on", "itlbo:p=0.3,obl_bounds=population"})
