@@ -3,9 +3,14 @@
 namespace mhb {
 
 // One line per optimiser; each is defined in its own file.
+void register_itlbo(AlgorithmRegistry& registry);
+void register_tlbo(AlgorithmRegistry& registry);
+void register_pso(AlgorithmRegistry& registry);
 
 void register_builtin_algorithms(AlgorithmRegistry& registry) {
-    (void)registry;
+    register_itlbo(registry);
+    register_tlbo(registry);
+    register_pso(registry);
 }
 
 const AlgorithmRegistry& builtin_algorithms() {

@@ -61,9 +61,12 @@ ParameterInfo ParameterInfo::text(std::string name, std::string default_value, s
 
 namespace {
 
-std::string bound_text(double v) {
+// Integer bounds are shown in full (100000, not the shortest form 1e+05).
+std::string bound_text(double v, bool integer) {
     if (std::isinf(v))
         return v > 0 ? "inf" : "-inf";
+    if (integer)
+        return std::to_string(static_cast<long long>(v));
     return format_real(v);
 }
 
@@ -79,7 +82,8 @@ std::string ParameterInfo::allowed() const {
     switch (kind) {
     case ParameterKind::real:
     case ParameterKind::integer:
-        return std::string(min_open ? "(" : "[") + bound_text(min) + ", " + bound_text(max) +
+        return std::string(min_open ? "(" : "[") + bound_text(min, kind == ParameterKind::integer) + ", " +
+               bound_text(max, kind == ParameterKind::integer) +
                (max_open ? ")" : "]");
     case ParameterKind::boolean:
         return "{on, off}";

@@ -1,0 +1,108 @@
+// The class of learners that TLBO (algorithms/tlbo.cpp) and ITLBO (algorithms/itlbo.cpp) both
+// teach: positions, fitness, the running sum behind "Mean" and the index of the teacher, kept
+// consistent while learners are replaced in place, one at a time. Plus the one step the two
+// algorithms share by definition: the learner phase of eq. 7 (TLBO's, which ITLBO keeps when
+// its subject-stepwise learning is off).
+//
+// Only bookkeeping and that shared phase live here. Each algorithm writes its own teacher phase,
+// its own main loop and its own extras, so that the test "ITLBO with its three switches off is
+// TLBO, bit for bit" compares two separate codings and can fail.
+#pragma once
+
+#include "algorithms/sampling.hpp"
+#include "problems/objective.hpp"
+#include "problems/rng.hpp"
+
+#include <Eigen/Core>
+
+namespace mhb::detail {
+
+class Classroom {
+public:
+    // Draws `np` learners uniformly in the box (eq. 5: learner by learner, coordinate by
+    // coordinate) and evaluates each as it is drawn: np evaluations.
+    Classroom(Objective& objective, Rng& rng, Eigen::Index np)
+        : x_(objective.dimension(), np), f_(np), sum_(objective.dimension()),
+          inverse_size_(1.0 / static_cast<double>(np)) {
+        for (Eigen::Index i = 0; i < np; ++i) {
+            Eigen::VectorXd learner = uniform_point(objective.bounds(), rng);
+            f_[i] = objective.evaluate(learner);
+            x_.col(i) = learner;
+        }
+        resum();
+        find_teacher();
+    }
+
+    [[nodiscard]] Eigen::Index size() const { return x_.cols(); }
+    [[nodiscard]] Eigen::Index dimension() const { return x_.rows(); }
+    [[nodiscard]] auto learner(Eigen::Index i) const { return x_.col(i); }
+    [[nodiscard]] double fitness(Eigen::Index i) const { return f_[i]; }
+    [[nodiscard]] const Eigen::MatrixXd& positions() const { return x_; }
+
+    // The teacher is the best learner of the class as it is now; among equal fitness, the
+    // lowest index. Kept up to date by replace().
+    [[nodiscard]] Eigen::Index teacher() const { return teacher_; }
+
+    // "Mean" of eqs. 6 and 8, coordinate k, of the class as it is now. It comes from a running
+    // sum updated at every replacement (O(D) instead of O(NP D) per learner); resum() makes it
+    // exact again, and both algorithms call it at the start of every teacher phase, so rounding
+    // drift never outlives one phase. (Multiplying by 1/NP rather than dividing by NP: a division
+    // per coordinate and learner was the largest cost of TLBO's own code.)
+    [[nodiscard]] double mean(Eigen::Index k) const { return sum_[k] * inverse_size_; }
+
+    void resum() { sum_ = x_.rowwise().sum(); }
+
+    // Learner i becomes `x`, of fitness f: a greedy acceptance, or an unconditional replacement
+    // (ITLBO's opposition-based mutation), which may make the teacher worse.
+    void replace(Eigen::Index i, const Eigen::VectorXd& x, double f) {
+        sum_ += x - x_.col(i);
+        x_.col(i) = x;
+        const bool was_teacher = i == teacher_;
+        const double old_f = f_[i];
+        f_[i] = f;
+        if (f < f_[teacher_] || (f == f_[teacher_] && i < teacher_))
+            teacher_ = i;
+        else if (was_teacher && f > old_f)
+            find_teacher();
+    }
+
+private:
+    void find_teacher() {
+        Eigen::Index best = 0;
+        for (Eigen::Index i = 1; i < f_.size(); ++i)
+            if (f_[i] < f_[best])
+                best = i;
+        teacher_ = best;
+    }
+
+    Eigen::MatrixXd x_;   // D x NP, one learner per column (contiguous)
+    Eigen::VectorXd f_;   // fitness of each learner
+    Eigen::VectorXd sum_; // running sum of the columns of x_
+    double inverse_size_; // 1 / NP
+    Eigen::Index teacher_ = 0;
+};
+
+// The learner phase of TLBO (Rao et al. 2011; eq. 7 of Li, Wang, Ji 2017). For each learner i in
+// index order: a partner j != i, read as it is at that moment; r uniform per coordinate;
+// X_new = X_i + r (X_i - X_j) if f(X_i) < f(X_j), else X_i + r (X_j - X_i); greedy.
+// Draws per learner: j, then r_1..r_D. NP evaluations. `trial` is a buffer of size D.
+inline void learner_phase(Classroom& c, Objective& objective, Rng& rng, Eigen::VectorXd& trial) {
+    const auto np = static_cast<std::uint64_t>(c.size());
+    for (Eigen::Index i = 0; i < c.size(); ++i) {
+        const auto j = static_cast<Eigen::Index>(rng.below_except(np, static_cast<std::uint64_t>(i)));
+        const auto xi = c.learner(i);
+        const auto xj = c.learner(j);
+        if (c.fitness(i) < c.fitness(j)) {
+            for (Eigen::Index k = 0; k < trial.size(); ++k)
+                trial[k] = xi[k] + rng.uniform() * (xi[k] - xj[k]);
+        } else {
+            for (Eigen::Index k = 0; k < trial.size(); ++k)
+                trial[k] = xi[k] + rng.uniform() * (xj[k] - xi[k]);
+        }
+        const double f = objective.evaluate(trial);
+        if (f < c.fitness(i))
+            c.replace(i, trial, f);
+    }
+}
+
+} // namespace mhb::detail
