@@ -45,23 +45,7 @@ Rng::Rng(std::uint64_t seed) noexcept {
 namespace {
 // __extension__ keeps -Wpedantic quiet about the GCC/Clang 128-bit type Lemire's method needs.
 __extension__ using Uint128 = unsigned __int128;
-
-constexpr std::uint64_t rotl(std::uint64_t x, int k) noexcept { return (x << k) | (x >> (64 - k)); }
 } // namespace
-
-std::uint64_t Rng::next() noexcept {
-    const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
-    const std::uint64_t t = s_[1] << 17;
-    s_[2] ^= s_[0];
-    s_[3] ^= s_[1];
-    s_[1] ^= s_[2];
-    s_[0] ^= s_[3];
-    s_[2] ^= t;
-    s_[3] = rotl(s_[3], 45);
-    return result;
-}
-
-double Rng::uniform() noexcept { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
 
 std::uint64_t Rng::below(std::uint64_t n) noexcept {
     // Lemire (2019), "Fast random integer generation in an interval".

@@ -28,14 +28,24 @@ public:
 
     explicit Rng(std::uint64_t seed) noexcept;
 
-    // Raw 64 bits (xoshiro256**, Blackman and Vigna 2018).
-    result_type next() noexcept;
+    // Raw 64 bits (xoshiro256**, Blackman and Vigna 2018). Inline: it is in every inner loop.
+    result_type next() noexcept {
+        const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
+        const std::uint64_t t = s_[1] << 17;
+        s_[2] ^= s_[0];
+        s_[3] ^= s_[1];
+        s_[1] ^= s_[2];
+        s_[0] ^= s_[3];
+        s_[2] ^= t;
+        s_[3] = rotl(s_[3], 45);
+        return result;
+    }
     result_type operator()() noexcept { return next(); }
     static constexpr result_type min() noexcept { return 0; }
     static constexpr result_type max() noexcept { return ~result_type{0}; }
 
     // Uniform on [0, 1), 53 random bits.
-    double uniform() noexcept;
+    double uniform() noexcept { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
     // Uniform on [lo, hi).
     double uniform(double lo, double hi) noexcept { return lo + (hi - lo) * uniform(); }
     // Uniform integer on [0, n), unbiased (Lemire's multiply-and-reject). n must be > 0.
@@ -48,6 +58,8 @@ public:
     bool bernoulli(double p) noexcept { return uniform() < p; }
 
 private:
+    static constexpr std::uint64_t rotl(std::uint64_t x, int k) noexcept { return (x << k) | (x >> (64 - k)); }
+
     std::uint64_t s_[4];
     double spare_normal_ = 0.0;
     bool has_spare_ = false;
