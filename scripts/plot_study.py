@@ -1,0 +1,163 @@
+#!/usr/bin/env python3
+"""Draw the figures of an mhbench report from its curve-data CSVs (nothing else is read).
+
+Usage: plot_study.py REPORT_DIR
+
+Reads REPORT_DIR/curves_iteration.csv, curves_evaluations.csv, parameters_iteration.csv and
+final_values.csv (written by `mhbench report`) and writes PDF and PNG files to REPORT_DIR/figures/:
+  convergence_iteration_<problem>   mean best-so-far vs iteration, std band, log y (the paper's Fig. 5)
+  convergence_evaluations_<problem> median best-so-far vs evaluations, IQR band, log-log
+  parameter_<name>_<problem>        mean best-so-far parameter vs iteration, the true value as a
+                                    line and the least-squares optimum dotted (the paper's Figs. 6-9)
+  final_values_<problem>            box plots of the final values per algorithm
+  ecdf_target_<problem>             fixed-target ECDF: fraction of runs that reached the study's
+                                    target within a number of evaluations (when targets were set)
+Needs matplotlib (Debian: apt install python3-matplotlib); uses the Agg backend, opens no window.
+"""
+import csv
+import math
+import os
+import re
+import sys
+from collections import OrderedDict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read_rows(path):
+    if not os.path.exists(path):
+        return []
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def slug(text):
+    return re.sub(r"[^A-Za-z0-9]+", "_", text).strip("_")
+
+
+def number(text):
+    return float(text) if text not in ("", None) else math.nan
+
+
+def group(rows, *keys):
+    """OrderedDict: tuple of key values -> list of rows, in file order."""
+    out = OrderedDict()
+    for row in rows:
+        out.setdefault(tuple(row[k] for k in keys), []).append(row)
+    return out
+
+
+def save(fig, out_dir, name):
+    for ext in ("pdf", "png"):
+        fig.savefig(os.path.join(out_dir, name + "." + ext), dpi=150, bbox_inches="tight")
+    plt.close(fig)
+
+
+def positive(values):
+    return all(v > 0 for v in values if not math.isnan(v))
+
+
+def convergence(rows, x_key, centre, low, high, band_label, log_x, title_x, name_prefix, out_dir):
+    for (problem,), problem_rows in group(rows, "problem").items():
+        fig, ax = plt.subplots(figsize=(6, 4))
+        all_values = []
+        for (algorithm,), r in group(problem_rows, "algorithm").items():
+            x = [number(row[x_key]) for row in r]
+            c = [number(row[centre]) for row in r]
+            lo, hi = low(r), high(r)
+            all_values += c
+            ax.plot(x, c, label=algorithm)
+            ax.fill_between(x, lo, hi, alpha=0.2)
+        if positive(all_values):
+            ax.set_yscale("log")
+        if log_x:
+            ax.set_xscale("log")
+        ax.set_xlabel(title_x)
+        ax.set_ylabel("best-so-far f (%s)" % band_label)
+        ax.set_title(problem)
+        ax.legend(fontsize="small")
+        save(fig, out_dir, name_prefix + slug(problem))
+
+
+def mean_std_band(rows, sign):
+    values = []
+    for row in rows:
+        m, s = number(row["mean"]), number(row["std"])
+        v = m + sign * s
+        # On a log axis a band below zero cannot be drawn: keep it at the mean's scale.
+        values.append(v if v > 0 or m <= 0 else m * 1e-3)
+    return values
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit("usage: plot_study.py REPORT_DIR")
+    report = sys.argv[1]
+    out_dir = os.path.join(report, "figures")
+    os.makedirs(out_dir, exist_ok=True)
+
+    convergence(read_rows(os.path.join(report, "curves_iteration.csv")), "iteration", "mean",
+                lambda r: mean_std_band(r, -1), lambda r: mean_std_band(r, +1), "mean, band: +/- std",
+                False, "iteration", "convergence_iteration_", out_dir)
+    convergence(read_rows(os.path.join(report, "curves_evaluations.csv")), "evaluations", "median",
+                lambda r: [number(x["q25"]) for x in r], lambda r: [number(x["q75"]) for x in r],
+                "median, band: IQR", True, "evaluations", "convergence_evaluations_", out_dir)
+
+    parameters = read_rows(os.path.join(report, "parameters_iteration.csv"))
+    for (problem, parameter), rows in group(parameters, "problem", "parameter").items():
+        fig, ax = plt.subplots(figsize=(6, 4))
+        truth, optimum = math.nan, math.nan
+        for (algorithm,), r in group(rows, "algorithm").items():
+            x = [number(row["iteration"]) for row in r]
+            m = [number(row["mean"]) for row in r]
+            s = [number(row["std"]) for row in r]
+            ax.plot(x, m, label=algorithm)
+            ax.fill_between(x, [a - b for a, b in zip(m, s)], [a + b for a, b in zip(m, s)], alpha=0.15)
+            truth, optimum = number(r[0]["true"]), number(r[0]["opt"])
+        if not math.isnan(truth):
+            ax.axhline(truth, color="black", linestyle="--", linewidth=1, label="true value")
+        if not math.isnan(optimum):
+            ax.axhline(optimum, color="grey", linestyle=":", linewidth=1, label="least-squares optimum")
+        ax.set_xlabel("iteration")
+        ax.set_ylabel(parameter + " (best-so-far, mean +/- std)")
+        ax.set_title(problem)
+        ax.legend(fontsize="small")
+        save(fig, out_dir, "parameter_%s_%s" % (slug(parameter), slug(problem)))
+
+    finals = read_rows(os.path.join(report, "final_values.csv"))
+    for (problem,), rows in group(finals, "problem").items():
+        by_algorithm = group(rows, "algorithm")
+        fig, ax = plt.subplots(figsize=(6, 4))
+        data = [[number(row["best_f"]) for row in r] for r in by_algorithm.values()]
+        ax.boxplot(data)
+        ax.set_xticks(range(1, len(data) + 1))
+        ax.set_xticklabels([a for (a,) in by_algorithm.keys()], rotation=20, fontsize="small")
+        if positive([v for d in data for v in d]):
+            ax.set_yscale("log")
+        ax.set_ylabel("final best f")
+        ax.set_title(problem)
+        save(fig, out_dir, "final_values_" + slug(problem))
+
+        if not any(row["evals_to_target"] for row in rows):
+            continue
+        fig, ax = plt.subplots(figsize=(6, 4))
+        for (algorithm,), r in by_algorithm.items():
+            hits = sorted(number(row["evals_to_target"]) for row in r if row["evals_to_target"])
+            budget = max(number(row["evaluations"]) for row in r)
+            x = [1.0] + hits + [budget]
+            y = [0.0] + [(i + 1) / len(r) for i in range(len(hits))] + [len(hits) / len(r)]
+            ax.step(x, y, where="post", label=algorithm)
+        ax.set_xscale("log")
+        ax.set_ylim(0, 1.02)
+        ax.set_xlabel("evaluations")
+        ax.set_ylabel("fraction of runs that reached the target")
+        ax.set_title(problem + " (fixed-target ECDF)")
+        ax.legend(fontsize="small")
+        save(fig, out_dir, "ecdf_target_" + slug(problem))
+
+
+if __name__ == "__main__":
+    main()
