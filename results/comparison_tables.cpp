@@ -106,6 +106,11 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
             successes += h.success ? 1 : 0;
         const double total = static_cast<double>(g.runs.size() + g.failed);
         const auto ert = expected_running_time(hits);
+        // A problem on which no run of any algorithm records reaching a target had none set.
+        bool has_target = false;
+        for (const auto& a : index.algorithms_on(g.problem))
+            for (const auto* r : index.find(g.problem, a)->runs)
+                has_target = has_target || r->evaluations_to_target.has_value();
         std::vector<TableCell> row = {text_cell(g.problem),
                                       text_cell(g.algorithm),
                                       text_cell(std::to_string(g.runs.size()) + "/" +
@@ -118,8 +123,9 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
                                       number_cell(s.best),
                                       number_cell(s.worst),
                                       errors.empty() ? empty_cell() : number_cell(mean(errors), 4),
-                                      number_cell(static_cast<double>(successes) / total, 3),
-                                      ert ? number_cell(*ert, 6) : text_cell("inf")};
+                                      has_target ? number_cell(static_cast<double>(successes) / total, 3)
+                                                 : empty_cell(),
+                                      !has_target ? empty_cell() : (ert ? number_cell(*ert, 6) : text_cell("inf"))};
         for (double fraction : options.budget_fractions) {
             std::vector<double> values;
             for (const auto* r : g.runs)
@@ -130,7 +136,8 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
         t.add_row(std::move(row));
     }
     t.caption = "Std is the sample standard deviation (two-pass), IQR = q75 - q25 (linear interpolation, type 7). "
-                "Success: the run reached the study's target; ERT = evaluations of all runs (to the target for "
+                "Success: the run reached the study's target (blank: no run on the problem reached one, or none was "
+                "set); ERT = evaluations of all runs (to the target for "
                 "successful ones) / successful runs, as COCO defines it. Budget columns: median best-so-far after "
                 "that fraction of the largest evaluation count of the group.";
     return t;

@@ -36,7 +36,7 @@ void check_options(const ReportOptions& options) {
 
 std::string latex_document(const std::vector<Table>& tables) {
     std::string out = "% All tables of the report; compiles with pdflatex (article + booktabs).\n"
-                      "\\documentclass{article}\n\\usepackage{booktabs}\n\\usepackage[margin=1.5cm,landscape]{geometry}\n"
+                      "\\documentclass{article}\n\\usepackage{booktabs}\n"
                       "\\begin{document}\n";
     for (const auto& t : tables)
         out += render_latex(t) + "\n";
