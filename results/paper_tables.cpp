@@ -1,5 +1,6 @@
 #include "results/paper_tables.hpp"
 
+#include <cctype>
 #include <cmath>
 
 #include "results/published_pmsm.hpp"

@@ -6,6 +6,7 @@
 #include "results/comparison_tables.hpp"
 #include "results/csv.hpp"
 #include "results/curve_data.hpp"
+#include "results/ioh_export.hpp"
 #include "results/paper_tables.hpp"
 #include "results/study_index.hpp"
 #include "results/table.hpp"
@@ -115,7 +116,9 @@ void build_report(const StudyData& study, const ReportOptions& options, std::ost
     write_file_atomically(out_dir / "curves_evaluations.csv", fitness_curves_by_evaluations(index));
     write_file_atomically(out_dir / "parameters_iteration.csv", parameter_curves_by_iteration(index));
     write_file_atomically(out_dir / "final_values.csv", final_values(index));
-    console << "tables and curve data: " << out_dir.string() << '\n';
+    const std::size_t ioh_files = write_ioh_export(index, out_dir / "ioh");
+    console << "tables and curve data: " << out_dir.string() << "\nIOHprofiler export (" << ioh_files
+            << " files, load the folder in IOHanalyzer): " << (out_dir / "ioh").string() << '\n';
     if (options.figures)
         draw_figures(options, out_dir, console);
 }

@@ -1,7 +1,8 @@
 // `mhbench report`: everything rebuilt from a finished study directory alone. Writes into the
 // report directory the tables (Markdown, LaTeX, CSV; the paper's Tables 2-4 for PMSM problems, the
 // statistics tables for any problem), the curve data (CSV) and, when a Python with matplotlib is
-// found, the figures (figures/*.pdf and *.png, drawn by scripts/plot_study.py from the curve data).
+// found, the figures (figures/*.pdf and *.png, drawn by scripts/plot_study.py from the curve data),
+// and the runs in the IOHprofiler format (ioh/, for IOHanalyzer).
 // Prints the Markdown tables to the console. The runner calls it at the end of `mhbench run`.
 #pragma once
 

@@ -198,7 +198,7 @@ TEST_F(Report, OutputsMatchGoldenFiles) {
     std::size_t compared = 0;
     for (const auto& entry : fs::directory_iterator(study_dir_ / "report")) {
         const std::string name = entry.path().filename().string();
-        if (name == "report.md") // holds the (temporary) study path
+        if (name == "report.md" || entry.is_directory()) // report.md holds the (temporary) study path
             continue;
         if (update) {
             fs::create_directories(golden);
@@ -209,6 +209,51 @@ TEST_F(Report, OutputsMatchGoldenFiles) {
         ++compared;
     }
     EXPECT_GE(compared, 25u);
+}
+
+TEST_F(Report, IohExportParsesBackWithTheRunsValues) {
+    const fs::path folder = study_dir_ / "report" / "ioh" / "tlbo_np_50";
+    const fs::path dat = folder / "data_f1_pmsm_load_2_speed_2500" / "IOHprofiler_f1_DIM4.dat";
+    std::ifstream in(dat);
+    ASSERT_TRUE(in) << dat;
+    std::vector<std::vector<std::pair<long, double>>> runs;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line == "evaluations raw_y") {
+            runs.emplace_back();
+            continue;
+        }
+        ASSERT_FALSE(runs.empty()) << "data before the first header: " << line;
+        std::istringstream fields(line);
+        long evaluations = 0;
+        double y = 0;
+        ASSERT_TRUE(fields >> evaluations >> y) << line;
+        runs.back().emplace_back(evaluations, y);
+    }
+    ASSERT_EQ(runs.size(), 5u); // five TLBO runs on the PMSM problem
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        ASSERT_FALSE(runs[i].empty());
+        for (std::size_t k = 1; k < runs[i].size(); ++k) {
+            EXPECT_GT(runs[i][k].first, runs[i][k - 1].first);  // evaluations increase
+            EXPECT_LT(runs[i][k].second, runs[i][k - 1].second); // only improvements
+        }
+        // The last improvement is the run's final value, 5.0 + 0.2 i (see pmsm_run).
+        EXPECT_DOUBLE_EQ(runs[i].back().second, 5.0 + 0.2 * static_cast<double>(i));
+        EXPECT_EQ(runs[i].back().first, 600);
+    }
+    // The JSON parses (with Python's json module, where there is one) and lists the same runs.
+    const fs::path json = folder / "IOHprofiler_f1_pmsm_load_2_speed_2500.json";
+    ASSERT_TRUE(fs::exists(json));
+    if (std::system("python3 -c 'import json' >/dev/null 2>&1") != 0)
+        GTEST_SKIP() << "no python3 to parse the JSON";
+    const std::string check =
+        "python3 -c \"import json,sys; d=json.load(open(sys.argv[1])); s=d['scenarios'][0]; "
+        "assert d['algorithm']['name']=='tlbo:np=50' and d['function_id']==1 and not d['maximization']; "
+        "assert s['dimension']==4 and s['path']=='data_f1_pmsm_load_2_speed_2500/IOHprofiler_f1_DIM4.dat'; "
+        "assert [r['best']['y'] for r in s['runs']]==[5.0+0.2*i for i in range(5)], s['runs']; "
+        "assert all(r['evals']==600 and len(r['best']['x'])==4 for r in s['runs'])\" '" +
+        json.string() + "'";
+    EXPECT_EQ(std::system(check.c_str()), 0) << check;
 }
 
 TEST_F(Report, LatexCompilesWhereATexEngineExists) {
