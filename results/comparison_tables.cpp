@@ -209,21 +209,11 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
 }
 
 std::optional<Table> across_problems_table(const StudyIndex& index, const ComparisonOptions& options) {
-    // Problems on which every algorithm has runs: the blocks of the Friedman test.
-    std::vector<std::string> problems;
-    for (const auto& p : index.problems())
-        if (index.algorithms_on(p).size() == index.algorithms().size())
-            problems.push_back(p);
-    const auto& algorithms = index.algorithms();
-    if (problems.size() < 2 || algorithms.size() < 2)
+    const auto medians_or_none = per_problem_medians(index);
+    if (!medians_or_none)
         return std::nullopt;
-    std::vector<std::vector<double>> medians; // problems x algorithms
-    for (const auto& p : problems) {
-        std::vector<double> row;
-        for (const auto& a : algorithms)
-            row.push_back(summarize(index.find(p, a)->final_values()).median);
-        medians.push_back(row);
-    }
+    const auto& [problems, medians] = *medians_or_none;
+    const auto& algorithms = index.algorithms();
     const FriedmanResult friedman = friedman_test(medians);
     const std::size_t control =
         static_cast<std::size_t>(std::find(algorithms.begin(), algorithms.end(), options.reference) - algorithms.begin());
@@ -280,6 +270,25 @@ std::optional<Table> across_problems_table(const StudyIndex& index, const Compar
 }
 
 } // namespace
+
+std::optional<std::pair<std::vector<std::string>, std::vector<std::vector<double>>>>
+per_problem_medians(const StudyIndex& index) {
+    // Problems on which every algorithm has runs: the blocks of the Friedman test.
+    std::vector<std::string> problems;
+    for (const auto& p : index.problems())
+        if (index.algorithms_on(p).size() == index.algorithms().size())
+            problems.push_back(p);
+    if (problems.size() < 2 || index.algorithms().size() < 2)
+        return std::nullopt;
+    std::vector<std::vector<double>> medians;
+    for (const auto& p : problems) {
+        std::vector<double> row;
+        for (const auto& a : index.algorithms())
+            row.push_back(summarize(index.find(p, a)->final_values()).median);
+        medians.push_back(row);
+    }
+    return std::make_pair(problems, medians);
+}
 
 std::string resolve_reference(const StudyIndex& index, const std::optional<std::string>& requested) {
     const auto& algorithms = index.algorithms();

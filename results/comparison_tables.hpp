@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "results/study_index.hpp"
@@ -33,6 +34,12 @@ std::string resolve_reference(const StudyIndex& index, const std::optional<std::
 // "+" when `algorithm` is significantly better (lower) than the reference at `alpha` after
 // adjustment, "-" when significantly worse, "=" otherwise. a12 is A12(algorithm, reference).
 std::string comparison_marker(double adjusted_p, double a12, double alpha);
+
+// The blocks of the across-problem tests: the problems on which every algorithm has runs and, per
+// problem, each algorithm's median final value (columns in study order). Empty with fewer than
+// two such problems or two algorithms.
+std::optional<std::pair<std::vector<std::string>, std::vector<std::vector<double>>>>
+per_problem_medians(const StudyIndex& index);
 
 std::vector<Table> comparison_tables(const StudyIndex& index, const ComparisonOptions& options);
 

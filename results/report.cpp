@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "results/comparison_tables.hpp"
+#include "results/critical_difference.hpp"
 #include "results/csv.hpp"
 #include "results/curve_data.hpp"
 #include "results/ioh_export.hpp"
@@ -116,6 +117,11 @@ void build_report(const StudyData& study, const ReportOptions& options, std::ost
     write_file_atomically(out_dir / "curves_evaluations.csv", fitness_curves_by_evaluations(index));
     write_file_atomically(out_dir / "parameters_iteration.csv", parameter_curves_by_iteration(index));
     write_file_atomically(out_dir / "final_values.csv", final_values(index));
+    const fs::path cd_path = out_dir / "critical_difference.csv";
+    if (const auto cd = critical_difference_data(index, options.alpha))
+        write_file_atomically(cd_path, *cd);
+    else
+        fs::remove(cd_path, ec); // a stale one from an earlier report would mislead
     const std::size_t ioh_files = write_ioh_export(index, out_dir / "ioh");
     console << "tables and curve data: " << out_dir.string() << "\nIOHprofiler export (" << ioh_files
             << " files, load the folder in IOHanalyzer): " << (out_dir / "ioh").string() << '\n';

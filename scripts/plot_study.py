@@ -12,6 +12,8 @@ final_values.csv (written by `mhbench report`) and writes PDF and PNG files to R
   final_values_<problem>            box plots of the final values per algorithm
   ecdf_target_<problem>             fixed-target ECDF: fraction of runs that reached the study's
                                     target within a number of evaluations (when targets were set)
+  critical_difference               Friedman average ranks with the Nemenyi critical difference
+                                    (Demsar 2006), bars joining algorithms that do not differ
 Needs matplotlib (Debian: apt install python3-matplotlib); uses the Agg backend, opens no window.
 """
 import csv
@@ -157,6 +159,44 @@ def main():
         ax.set_title(problem + " (fixed-target ECDF)")
         ax.legend(fontsize="small")
         save(fig, out_dir, "ecdf_target_" + slug(problem))
+
+    critical_difference(report, out_dir)
+
+
+def critical_difference(report, out_dir):
+    rows = read_rows(os.path.join(report, "critical_difference.csv"))
+    if not rows:
+        return
+    ranked = sorted(((number(r["average_rank"]), r["algorithm"]) for r in rows))
+    cd = number(rows[0]["cd"])
+    k = len(ranked)
+    fig, ax = plt.subplots(figsize=(7, 1.2 + 0.3 * k))
+    ax.set_xlim(0.5, k + 0.5)
+    ax.set_ylim(-k - 1, 2)
+    ax.axhline(0, color="black", linewidth=1)
+    for r in range(1, k + 1):
+        ax.plot([r, r], [0, 0.15], color="black", linewidth=1)
+        ax.text(r, 0.3, str(r), ha="center", fontsize="small")
+    ax.plot([1, 1 + cd], [1.3, 1.3], color="black", linewidth=2)
+    ax.text(1 + cd / 2, 1.5, "CD = %.3g (alpha %s, %s problems)" % (cd, rows[0]["alpha"], rows[0]["problems"]),
+            ha="center", fontsize="small")
+    for i, (rank, name) in enumerate(ranked):
+        y = -(i + 1)
+        ax.plot([rank, rank], [0, y], color="grey", linewidth=0.8)
+        ax.text(rank + 0.05, y, "%s (%.2f)" % (name, rank), va="center", fontsize="small")
+    # Bars under the axis join the maximal groups whose ranks lie within CD of each other.
+    last_end, level = -1, 0
+    for i in range(k):
+        j = i
+        while j + 1 < k and ranked[j + 1][0] - ranked[i][0] < cd:
+            j += 1
+        if j > i and j > last_end:
+            level += 1
+            ax.plot([ranked[i][0] - 0.05, ranked[j][0] + 0.05], [-0.25 * level, -0.25 * level], color="black",
+                    linewidth=3)
+            last_end = j
+    ax.axis("off")
+    save(fig, out_dir, "critical_difference")
 
 
 if __name__ == "__main__":

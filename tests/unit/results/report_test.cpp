@@ -5,12 +5,14 @@
 // with one clear line, and bad options or damaged directories give clear errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "results/critical_difference.hpp"
 #include "results/csv.hpp"
 #include "results/report.hpp"
 #include "results/store.hpp"
@@ -179,6 +181,18 @@ TEST_F(Report, StatisticsTablesNameTheirTests) {
     EXPECT_NE(read_text(study_dir_ / "report" / "across_problems.md").find("Friedman"), std::string::npos);
 }
 
+TEST(CriticalDifference, NemenyiByHand) {
+    // Demsar (2006) Table 5(a): q_0.05 = 2.343 for k = 3, so with N = 22 problems
+    // CD = 2.343 sqrt(3 * 4 / (6 * 22)) = 2.343 sqrt(1 / 11) = 0.70644 (by hand).
+    const auto cd = nemenyi_critical_difference(3, 22, 0.05);
+    ASSERT_TRUE(cd.has_value());
+    EXPECT_NEAR(*cd, 2.343 / std::sqrt(11.0), 1e-12);
+    // Table 5(b): q_0.10 = 1.645 for k = 2; N = 6: CD = 1.645 sqrt(2 * 3 / 36) = 1.645 / sqrt 6.
+    EXPECT_NEAR(*nemenyi_critical_difference(2, 6, 0.10), 1.645 / std::sqrt(6.0), 1e-12);
+    EXPECT_FALSE(nemenyi_critical_difference(3, 22, 0.01).has_value()); // not tabulated
+    EXPECT_FALSE(nemenyi_critical_difference(11, 22, 0.05).has_value());
+}
+
 TEST_F(Report, CurveDataAverageOverRuns) {
     const CsvTable c = read_csv(study_dir_ / "report" / "curves_iteration.csv");
     // Row 2: PMSM, ITLBO, iteration 2 = the final values: mean 4.02, 5 runs.
@@ -290,7 +304,7 @@ TEST(ReportFigures, DrawnWhenMatplotlibIsThere) {
     const fs::path figures = dir / "report" / "figures";
     for (const char* name : {"convergence_iteration_pmsm_load_2_speed_2500", "convergence_evaluations_sphere_dim_2",
                              "parameter_Rs_pmsm_load_2_speed_2500", "parameter_psi_pmsm_load_2_speed_2500",
-                             "final_values_sphere_dim_2", "ecdf_target_sphere_dim_2"})
+                             "final_values_sphere_dim_2", "ecdf_target_sphere_dim_2", "critical_difference"})
         for (const char* ext : {".pdf", ".png"})
             EXPECT_GT(fs::file_size(figures / (std::string(name) + ext)), 1000u) << name << ext;
 }
