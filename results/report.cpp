@@ -96,7 +96,11 @@ void build_report(const StudyData& study, const ReportOptions& options, std::ost
     console << "mhbench report of " << study.directory.string() << ": " << study.runs.size() << " runs ("
             << index.failed_runs() << " failed), " << index.problems().size() << " problems, "
             << index.algorithms().size() << " algorithms; reference " << comparison.reference << "\n\n";
-    std::string all_markdown = "# mhbench report: " + study.directory.string() + "\n\n";
+    // The context (version, commit, compiler, threads, date) heads the combined report, so a table
+    // read later says what produced it.
+    std::string all_markdown = "# mhbench report: " + study.directory.string() + "\n\nStudy context (context.ini):\n\n```\n" +
+                               study.context_text + (study.context_text.empty() || study.context_text.back() == '\n' ? "" : "\n") +
+                               "```\n\n";
     for (const auto& t : tables) {
         const std::string markdown = render_markdown(t);
         console << markdown << '\n';
