@@ -50,18 +50,20 @@ double exact_two_sided(const std::vector<double>& counts, std::size_t s) {
     return std::min(1.0, 2.0 * std::min(lower, upper) / total);
 }
 
-// Null distribution of Mann-Whitney U for sizes m, n: the coefficients of the Gaussian binomial
-// [m + n choose m]_q = prod_{i=1..m} (1 - q^(n+i)) / (1 - q^i).
+// Null distribution of Mann-Whitney U for sizes m, n, by the counting recurrence
+// N(i, j, u) = N(i - 1, j, u - j) + N(i, j - 1, u) (the largest of the i + j values belongs to x,
+// adding j to U, or to y). Only additions, so the counts stay exact to double rounding even in the
+// far tails (a product formula with subtractions would cancel there).
 std::vector<double> mann_whitney_counts(std::size_t m, std::size_t n) {
-    std::vector<double> c(m * n + 1, 0.0);
-    c[0] = 1.0;
-    for (std::size_t i = 1; i <= m; ++i) {
-        for (std::size_t u = c.size(); u-- > n + i;) // multiply by (1 - q^(n+i))
-            c[u] -= c[u - n - i];
-        for (std::size_t u = i; u < c.size(); ++u) // divide by (1 - q^i)
-            c[u] += c[u - i];
-    }
-    return c;
+    // by_i[i] = distribution of U for sizes (i, j), for the current j; starts at j = 0.
+    std::vector<std::vector<double>> by_i(m + 1, std::vector<double>(m * n + 1, 0.0));
+    for (auto& d : by_i)
+        d[0] = 1.0; // (i, 0): U = 0 only
+    for (std::size_t j = 1; j <= n; ++j)
+        for (std::size_t i = 1; i <= m; ++i) // by_i[i - 1] already holds (i - 1, j)
+            for (std::size_t u = i * j + 1; u-- > j;)
+                by_i[i][u] += by_i[i - 1][u - j];
+    return by_i[m];
 }
 
 // Null distribution of the signed-rank statistic for n pairs: subsets of {1..n} by their sum.

@@ -35,6 +35,28 @@ TEST(RankSum, ExactTailByHand) {
     EXPECT_NEAR(r.p_value, 2.0 / 35.0, 1e-15);
 }
 
+TEST(RankSum, ExactStaysAccurateInTheFarTailAndForPaperSizedSamples) {
+    // 30 values all below 30 others: U = 0, p = 2 / C(60, 30) = 1.6911233892144735e-17 (Python's
+    // exact integer math.comb). And a 30 x 30 case with overlap: scipy.stats.mannwhitneyu(x, y,
+    // method='exact') gives U = 184.0, p = 4.7002042164004806e-05.
+    std::vector<double> low;
+    std::vector<double> high;
+    std::vector<double> x;
+    std::vector<double> y;
+    for (int i = 0; i < 30; ++i) {
+        low.push_back(i);
+        high.push_back(100 + i);
+        x.push_back(i + 0.5);
+        y.push_back(i * 0.9 + 12.25);
+    }
+    const TestResult tail = rank_sum_test(low, high);
+    EXPECT_TRUE(tail.exact);
+    EXPECT_NEAR(tail.p_value / 1.6911233892144735e-17, 1.0, 1e-12);
+    const TestResult overlap = rank_sum_test(x, y);
+    EXPECT_EQ(overlap.statistic, 184.0);
+    EXPECT_NEAR(overlap.p_value / 4.7002042164004806e-05, 1.0, 1e-10);
+}
+
 TEST(RankSum, NormalApproximationWithTiesAndContinuityCorrection) {
     // scipy.stats.mannwhitneyu(x, y, method='asymptotic', use_continuity=True): U = 9.0,
     // p = 0.09667054340670089 (same formula as R's wilcox.test with correct = TRUE).
