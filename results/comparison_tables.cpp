@@ -1,19 +1,23 @@
 #include "results/comparison_tables.hpp"
 
+#include "results/hypothesis_tests.hpp"
+#include "results/statistics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include "results/hypothesis_tests.hpp"
-#include "results/statistics.hpp"
 
 namespace mhb {
 
 namespace {
 
-TableCell empty_cell() { return text_cell(""); }
+TableCell empty_cell() {
+    return text_cell("");
+}
 
-std::string alpha_text(double alpha) { return format_number(alpha, 3); }
+std::string alpha_text(double alpha) {
+    return format_number(alpha, 3);
+}
 
 // Best-so-far of a run after at most `budget` evaluations (from its iteration curve and its
 // checkpoints, whichever recorded the latest point within the budget); NaN if none is.
@@ -33,7 +37,9 @@ double value_at_budget(const RunRecord& r, double budget) {
     return value;
 }
 
-std::string percent_text(double fraction) { return format_number(100.0 * fraction, 3) + "%"; }
+std::string percent_text(double fraction) {
+    return format_number(100.0 * fraction, 3) + "%";
+}
 
 struct Comparison {
     std::string problem;
@@ -75,8 +81,8 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
     Table t;
     t.id = "summary";
     t.title = "Summary of final best-so-far values per problem and algorithm";
-    t.header = {"Problem", "Algorithm", "Runs", "Evaluations (mean)", "Mean", "Std", "Median", "IQR",
-                "Best", "Worst", "Mean error f - f*", "Success rate", "ERT"};
+    t.header = {"Problem", "Algorithm", "Runs",  "Evaluations (mean)", "Mean",         "Std", "Median",
+                "IQR",     "Best",      "Worst", "Mean error f - f*",  "Success rate", "ERT"};
     for (double fraction : options.budget_fractions)
         t.header.push_back("Median at " + percent_text(fraction) + " budget");
     for (const auto& g : index.groups()) {
@@ -98,7 +104,8 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
             most_evaluations = std::max(most_evaluations, static_cast<double>(r->evaluations));
             if (r->error())
                 errors.push_back(*r->error());
-            hits.push_back({r->evaluations_to_target.has_value(), r->evaluations_to_target.value_or(r->evaluations)});
+            hits.push_back(
+                {r->evaluations_to_target.has_value(), r->evaluations_to_target.value_or(r->evaluations)});
         }
         // Failed runs count as unsuccessful runs that spent nothing we know of.
         std::size_t successes = 0;
@@ -111,21 +118,20 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
         for (const auto& a : index.algorithms_on(g.problem))
             for (const auto* r : index.find(g.problem, a)->runs)
                 has_target = has_target || r->evaluations_to_target.has_value();
-        std::vector<TableCell> row = {text_cell(g.problem),
-                                      text_cell(g.algorithm),
-                                      text_cell(std::to_string(g.runs.size()) + "/" +
-                                                std::to_string(g.runs.size() + g.failed)),
-                                      number_cell(mean(evaluations), 6),
-                                      number_cell(s.mean),
-                                      number_cell(s.std, 3),
-                                      number_cell(s.median),
-                                      number_cell(s.iqr(), 3),
-                                      number_cell(s.best),
-                                      number_cell(s.worst),
-                                      errors.empty() ? empty_cell() : number_cell(mean(errors), 4),
-                                      has_target ? number_cell(static_cast<double>(successes) / total, 3)
-                                                 : empty_cell(),
-                                      !has_target ? empty_cell() : (ert ? number_cell(*ert, 6) : text_cell("inf"))};
+        std::vector<TableCell> row = {
+            text_cell(g.problem),
+            text_cell(g.algorithm),
+            text_cell(std::to_string(g.runs.size()) + "/" + std::to_string(g.runs.size() + g.failed)),
+            number_cell(mean(evaluations), 6),
+            number_cell(s.mean),
+            number_cell(s.std, 3),
+            number_cell(s.median),
+            number_cell(s.iqr(), 3),
+            number_cell(s.best),
+            number_cell(s.worst),
+            errors.empty() ? empty_cell() : number_cell(mean(errors), 4),
+            has_target ? number_cell(static_cast<double>(successes) / total, 3) : empty_cell(),
+            !has_target ? empty_cell() : (ert ? number_cell(*ert, 6) : text_cell("inf"))};
         for (double fraction : options.budget_fractions) {
             std::vector<double> values;
             for (const auto* r : g.runs)
@@ -135,11 +141,12 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
         }
         t.add_row(std::move(row));
     }
-    t.caption = "Std is the sample standard deviation (two-pass), IQR = q75 - q25 (linear interpolation, type 7). "
-                "Success: the run reached the study's target (blank: no run on the problem reached one, or none was "
-                "set); ERT = evaluations of all runs (to the target for "
-                "successful ones) / successful runs, as COCO defines it. Budget columns: median best-so-far after "
-                "that fraction of the largest evaluation count of the group.";
+    t.caption =
+        "Std is the sample standard deviation (two-pass), IQR = q75 - q25 (linear interpolation, type 7). "
+        "Success: the run reached the study's target (blank: no run on the problem reached one, or none was "
+        "set); ERT = evaluations of all runs (to the target for "
+        "successful ones) / successful runs, as COCO defines it. Budget columns: median best-so-far after "
+        "that fraction of the largest evaluation count of the group.";
     return t;
 }
 
@@ -153,13 +160,14 @@ Table tests_table(const std::vector<Comparison>& comparisons, const ComparisonOp
                    number_cell(c.test.statistic, 6), c.test.exact ? empty_cell() : number_cell(c.test.z, 4),
                    number_cell(c.test.p_value, 3), number_cell(c.adjusted_p, 3), number_cell(c.a12, 3),
                    text_cell(c.marker)});
-    t.caption = "Two-sided Wilcoxon rank-sum test (Mann-Whitney U; W = U of the algorithm) of each algorithm's "
-                "final values against the reference's, Holm-adjusted across the comparisons of each problem, "
-                "alpha = " +
-                alpha_text(options.alpha) +
-                ". A12 = Vargha-Delaney effect size P(algorithm > reference) + P(=)/2 (below 0.5: the algorithm "
-                "tends to lower, better values). +: significantly better than the reference, -: significantly "
-                "worse, =: no significant difference.";
+    t.caption =
+        "Two-sided Wilcoxon rank-sum test (Mann-Whitney U; W = U of the algorithm) of each algorithm's "
+        "final values against the reference's, Holm-adjusted across the comparisons of each problem, "
+        "alpha = " +
+        alpha_text(options.alpha) +
+        ". A12 = Vargha-Delaney effect size P(algorithm > reference) + P(=)/2 (below 0.5: the algorithm "
+        "tends to lower, better values). +: significantly better than the reference, -: significantly "
+        "worse, =: no significant difference.";
     return t;
 }
 
@@ -192,7 +200,8 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
             for (const auto& c : comparisons)
                 if (c.problem == p && c.algorithm == a)
                     marker = " " + c.marker;
-            TableCell cell{format_number(s.mean, 4) + " (" + format_number(s.std, 2) + ")" + marker, "", s.mean == best};
+            TableCell cell{format_number(s.mean, 4) + " (" + format_number(s.std, 2) + ")" + marker, "",
+                           s.mean == best};
             row.push_back(cell);
         }
         t.add_row(std::move(row));
@@ -215,8 +224,8 @@ std::optional<Table> across_problems_table(const StudyIndex& index, const Compar
     const auto& [problems, medians] = *medians_or_none;
     const auto& algorithms = index.algorithms();
     const FriedmanResult friedman = friedman_test(medians);
-    const std::size_t control =
-        static_cast<std::size_t>(std::find(algorithms.begin(), algorithms.end(), options.reference) - algorithms.begin());
+    const std::size_t control = static_cast<std::size_t>(
+        std::find(algorithms.begin(), algorithms.end(), options.reference) - algorithms.begin());
     std::vector<double> posthoc = friedman_posthoc_p_values(friedman.average_ranks, problems.size(), control);
     std::vector<double> posthoc_raw;
     std::vector<double> signed_raw;
@@ -239,8 +248,8 @@ std::optional<Table> across_problems_table(const StudyIndex& index, const Compar
     Table t;
     t.id = "across_problems";
     t.title = "Across problems: Friedman average ranks and Wilcoxon signed-rank against " + options.reference;
-    t.header = {"Algorithm", "Average rank", "Post-hoc p (Holm)", "Signed-rank V", "Signed-rank p",
-                "Signed-rank p (Holm)", "Signed-rank test"};
+    t.header = {"Algorithm",     "Average rank",         "Post-hoc p (Holm)", "Signed-rank V",
+                "Signed-rank p", "Signed-rank p (Holm)", "Signed-rank test"};
     double best_rank = INFINITY;
     for (double r : friedman.average_ranks)
         best_rank = std::min(best_rank, r);
@@ -249,8 +258,8 @@ std::optional<Table> across_problems_table(const StudyIndex& index, const Compar
         TableCell rank = number_cell(friedman.average_ranks[j], 4);
         rank.bold = friedman.average_ranks[j] == best_rank;
         if (j == control) {
-            t.add_row({text_cell(algorithms[j] + " (reference)"), rank, empty_cell(), empty_cell(), empty_cell(),
-                       empty_cell(), empty_cell()});
+            t.add_row({text_cell(algorithms[j] + " (reference)"), rank, empty_cell(), empty_cell(),
+                       empty_cell(), empty_cell(), empty_cell()});
             continue;
         }
         t.add_row({text_cell(algorithms[j]), rank, number_cell(posthoc_adjusted[i], 3),
@@ -258,14 +267,16 @@ std::optional<Table> across_problems_table(const StudyIndex& index, const Compar
                    number_cell(signed_adjusted[i], 3), text_cell(signed_tests[j].name)});
         ++i;
     }
-    t.caption = "Over " + std::to_string(problems.size()) + " problems (per-problem medians of the final values; rank 1 = "
-                "lowest). Friedman test: chi-square = " +
-                format_number(friedman.chi_square, 5) + ", df = " + format_number(friedman.degrees_of_freedom) +
-                ", p = " + format_number(friedman.p_value, 3) +
-                ". Post-hoc: z = (R_j - R_ref) / sqrt(k(k+1)/(6N)) against the reference, Holm-adjusted. Wilcoxon "
-                "signed-rank test of each algorithm's per-problem medians against the reference's, paired by "
-                "problem, Holm-adjusted; alpha = " +
-                alpha_text(options.alpha) + ".";
+    t.caption =
+        "Over " + std::to_string(problems.size()) +
+        " problems (per-problem medians of the final values; rank 1 = "
+        "lowest). Friedman test: chi-square = " +
+        format_number(friedman.chi_square, 5) + ", df = " + format_number(friedman.degrees_of_freedom) +
+        ", p = " + format_number(friedman.p_value, 3) +
+        ". Post-hoc: z = (R_j - R_ref) / sqrt(k(k+1)/(6N)) against the reference, Holm-adjusted. Wilcoxon "
+        "signed-rank test of each algorithm's per-problem medians against the reference's, paired by "
+        "problem, Holm-adjusted; alpha = " +
+        alpha_text(options.alpha) + ".";
     return t;
 }
 

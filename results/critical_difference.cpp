@@ -1,11 +1,11 @@
 #include "results/critical_difference.hpp"
 
-#include <array>
-#include <cmath>
-
 #include "results/comparison_tables.hpp"
 #include "results/csv.hpp"
 #include "results/hypothesis_tests.hpp"
+
+#include <array>
+#include <cmath>
 
 namespace mhb {
 
@@ -17,7 +17,8 @@ constexpr std::array<double, 9> q_010 = {1.645, 2.052, 2.291, 2.459, 2.589, 2.69
 
 } // namespace
 
-std::optional<double> nemenyi_critical_difference(std::size_t algorithms, std::size_t problems, double alpha) {
+std::optional<double> nemenyi_critical_difference(std::size_t algorithms, std::size_t problems,
+                                                  double alpha) {
     if (algorithms < 2 || algorithms > 10 || problems == 0)
         return std::nullopt;
     const std::array<double, 9>* table = nullptr;
@@ -41,8 +42,8 @@ std::optional<std::string> critical_difference_data(const StudyIndex& index, dou
     const FriedmanResult friedman = friedman_test(blocks->second);
     std::string out = "algorithm,average_rank,cd,alpha,problems\n";
     for (std::size_t j = 0; j < index.algorithms().size(); ++j)
-        out += csv_field(index.algorithms()[j]) + ',' + csv_number(friedman.average_ranks[j]) + ',' + csv_number(*cd) +
-               ',' + csv_number(alpha) + ',' + std::to_string(blocks->first.size()) + '\n';
+        out += csv_field(index.algorithms()[j]) + ',' + csv_number(friedman.average_ranks[j]) + ',' +
+               csv_number(*cd) + ',' + csv_number(alpha) + ',' + std::to_string(blocks->first.size()) + '\n';
     return out;
 }
 

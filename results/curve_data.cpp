@@ -1,12 +1,12 @@
 #include "results/curve_data.hpp"
 
+#include "results/csv.hpp"
+#include "results/statistics.hpp"
+
 #include <algorithm>
 #include <functional>
 #include <set>
 #include <utility>
-
-#include "results/csv.hpp"
-#include "results/statistics.hpp"
 
 namespace mhb {
 
@@ -39,12 +39,14 @@ void sample_union(const std::vector<Steps>& runs,
     }
 }
 
-std::string prefix(const RunGroup& g) { return csv_field(g.problem) + ',' + csv_field(g.algorithm) + ','; }
+std::string prefix(const RunGroup& g) {
+    return csv_field(g.problem) + ',' + csv_field(g.algorithm) + ',';
+}
 
 std::string summary_columns(const std::vector<double>& values) {
     const Summary s = summarize(values);
-    return csv_number(s.mean) + ',' + csv_number(s.std) + ',' + csv_number(s.median) + ',' + csv_number(s.q25) +
-           ',' + csv_number(s.q75);
+    return csv_number(s.mean) + ',' + csv_number(s.std) + ',' + csv_number(s.median) + ',' +
+           csv_number(s.q25) + ',' + csv_number(s.q75);
 }
 
 } // namespace
@@ -110,12 +112,13 @@ std::string parameter_curves_by_iteration(const StudyIndex& index) {
                         s.emplace_back(p.iteration, p.best_x[k]);
                 runs.push_back(std::move(s));
             }
-            const std::string truth = k < first.true_parameters.size() ? csv_number(first.true_parameters[k]) : "";
+            const std::string truth =
+                k < first.true_parameters.size() ? csv_number(first.true_parameters[k]) : "";
             const std::string optimum = k < first.x_opt.size() ? csv_number(first.x_opt[k]) : "";
             sample_union(runs, [&](std::int64_t iteration, const std::vector<double>& v) {
-                out += prefix(g) + csv_field(first.parameter_names[k]) + ',' + std::to_string(iteration) + ',' +
-                       std::to_string(v.size()) + ',' + csv_number(mean(v)) + ',' + csv_number(standard_deviation(v)) +
-                       ',' + truth + ',' + optimum + '\n';
+                out += prefix(g) + csv_field(first.parameter_names[k]) + ',' + std::to_string(iteration) +
+                       ',' + std::to_string(v.size()) + ',' + csv_number(mean(v)) + ',' +
+                       csv_number(standard_deviation(v)) + ',' + truth + ',' + optimum + '\n';
             });
         }
     }

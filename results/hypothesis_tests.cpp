@@ -81,7 +81,8 @@ std::vector<double> signed_rank_counts(std::size_t n) {
 std::vector<double> average_ranks(const std::vector<double>& values) {
     std::vector<std::size_t> order(values.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
     std::vector<double> ranks(values.size());
     for (std::size_t i = 0; i < order.size();) {
         std::size_t j = i;
@@ -118,7 +119,8 @@ TestResult rank_sum_test(const std::vector<double>& x, const std::vector<double>
     }
     r.name = "Wilcoxon rank-sum (Mann-Whitney U), normal approx. with tie and continuity correction";
     const double centred = r.statistic - m * n / 2.0;
-    const double sigma = std::sqrt(m * n / 12.0 * ((m + n + 1.0) - tie_term(ties) / ((m + n) * (m + n - 1.0))));
+    const double sigma =
+        std::sqrt(m * n / 12.0 * ((m + n + 1.0) - tie_term(ties) / ((m + n) * (m + n - 1.0))));
     if (sigma == 0.0) { // every value equal: no evidence either way
         r.p_value = 1.0;
         return r;
@@ -216,7 +218,8 @@ std::vector<double> holm_adjust(const std::vector<double>& p_values) {
     const std::size_t m = p_values.size();
     std::vector<std::size_t> order(m);
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p_values[a] < p_values[b]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return p_values[a] < p_values[b]; });
     std::vector<double> adjusted(m);
     double running = 0.0;
     for (std::size_t i = 0; i < m; ++i) {

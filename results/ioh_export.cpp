@@ -1,12 +1,12 @@
 #include "results/ioh_export.hpp"
 
+#include "results/csv.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
 #include <stdexcept>
-
-#include "results/csv.hpp"
 
 namespace mhb {
 
@@ -35,7 +35,9 @@ std::string json_string(const std::string& text) {
 }
 
 // A JSON number (JSON has no nan/inf: those become null).
-std::string json_number(double value) { return std::isfinite(value) ? csv_number(value) : "null"; }
+std::string json_number(double value) {
+    return std::isfinite(value) ? csv_number(value) : "null";
+}
 
 // The run's best-so-far as recorded, reduced to its strict improvements, by evaluations.
 std::vector<std::pair<std::int64_t, double>> improvements(const RunRecord& r) {
@@ -74,8 +76,8 @@ std::size_t write_ioh_export(const StudyIndex& index, const fs::path& dir) {
                 by_dimension[r->best_x.size()].push_back(r);
             std::string scenarios;
             for (const auto& [dimension, runs] : by_dimension) {
-                const std::string dat_relative =
-                    "data_f" + id + "_" + name + "/IOHprofiler_f" + id + "_DIM" + std::to_string(dimension) + ".dat";
+                const std::string dat_relative = "data_f" + id + "_" + name + "/IOHprofiler_f" + id + "_DIM" +
+                                                 std::to_string(dimension) + ".dat";
                 std::string dat;
                 std::string run_entries;
                 for (const auto* r : runs) {
@@ -86,25 +88,26 @@ std::size_t write_ioh_export(const StudyIndex& index, const fs::path& dir) {
                     std::string x;
                     for (std::size_t k = 0; k < r->best_x.size(); ++k)
                         x += (k == 0 ? "" : ", ") + json_number(r->best_x[k]);
-                    run_entries += std::string(run_entries.empty() ? "" : ",\n") + "\t\t\t\t{\"instance\": 1, \"evals\": " +
-                                   std::to_string(r->evaluations) + ", \"best\": {\"evals\": " +
-                                   std::to_string(points.back().first) + ", \"y\": " + json_number(r->best_f) +
-                                   ", \"x\": [" + x + "]}}";
+                    run_entries += std::string(run_entries.empty() ? "" : ",\n") +
+                                   "\t\t\t\t{\"instance\": 1, \"evals\": " + std::to_string(r->evaluations) +
+                                   ", \"best\": {\"evals\": " + std::to_string(points.back().first) +
+                                   ", \"y\": " + json_number(r->best_f) + ", \"x\": [" + x + "]}}";
                 }
                 fs::create_directories(folder / ("data_f" + id + "_" + name));
                 write_file_atomically(folder / dat_relative, dat);
                 ++files;
-                scenarios += std::string(scenarios.empty() ? "" : ",\n") + "\t\t{\"dimension\": " +
-                             std::to_string(dimension) + ",\n\t\t\"path\": " + json_string(dat_relative) +
-                             ",\n\t\t\"runs\": [\n" + run_entries + "\n\t\t]}";
+                scenarios += std::string(scenarios.empty() ? "" : ",\n") +
+                             "\t\t{\"dimension\": " + std::to_string(dimension) +
+                             ",\n\t\t\"path\": " + json_string(dat_relative) + ",\n\t\t\"runs\": [\n" +
+                             run_entries + "\n\t\t]}";
             }
-            const std::string json = "{\n\t\"version\": \"0.3.3\",\n\t\"suite\": \"mhbench\",\n\t\"function_id\": " + id +
-                                     ",\n\t\"function_name\": " + json_string(name) +
-                                     ",\n\t\"maximization\": false,\n\t\"algorithm\": {\"name\": " +
-                                     json_string(algorithm) + ", \"info\": " +
-                                     json_string("mhbench run of " + algorithm + " on " + problem) +
-                                     "},\n\t\"attributes\": [\"evaluations\", \"raw_y\"],\n\t\"scenarios\": [\n" +
-                                     scenarios + "\n\t]\n}\n";
+            const std::string json =
+                "{\n\t\"version\": \"0.3.3\",\n\t\"suite\": \"mhbench\",\n\t\"function_id\": " + id +
+                ",\n\t\"function_name\": " + json_string(name) +
+                ",\n\t\"maximization\": false,\n\t\"algorithm\": {\"name\": " + json_string(algorithm) +
+                ", \"info\": " + json_string("mhbench run of " + algorithm + " on " + problem) +
+                "},\n\t\"attributes\": [\"evaluations\", \"raw_y\"],\n\t\"scenarios\": [\n" + scenarios +
+                "\n\t]\n}\n";
             write_file_atomically(folder / ("IOHprofiler_f" + id + "_" + name + ".json"), json);
             ++files;
         }

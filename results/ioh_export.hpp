@@ -9,9 +9,9 @@
 // evaluation count is where it was recorded, which can be later than where it happened.
 #pragma once
 
-#include <filesystem>
-
 #include "results/study_index.hpp"
+
+#include <filesystem>
 
 namespace mhb {
 

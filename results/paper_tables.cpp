@@ -1,10 +1,10 @@
 #include "results/paper_tables.hpp"
 
-#include <cctype>
-#include <cmath>
-
 #include "results/published_pmsm.hpp"
 #include "results/statistics.hpp"
+
+#include <cctype>
+#include <cmath>
 
 namespace mhb {
 
@@ -15,7 +15,7 @@ const char* const paper_citation = "Li, Wang, Ji (2017), J. System Simulation 29
 struct PmsmProblem {
     std::string spec;
     const PublishedCondition* published = nullptr; // nullptr: a condition the paper did not run
-    std::string suffix;                             // "" for the paper's Table 2/3 condition
+    std::string suffix;                            // "" for the paper's Table 2/3 condition
 };
 
 std::string file_slug(const std::string& text) {
@@ -45,7 +45,9 @@ std::vector<PmsmProblem> pmsm_problems(const StudyIndex& index) {
     return out;
 }
 
-std::string base_name(const std::string& algorithm) { return split_spec_text(algorithm).name; }
+std::string base_name(const std::string& algorithm) {
+    return split_spec_text(algorithm).name;
+}
 
 // The paper's entry for this algorithm (matched by name, whatever its parameters), if any.
 template <typename Entry>
@@ -72,9 +74,13 @@ int paper_parameter(const std::string& name) {
     return -1;
 }
 
-TableCell empty_cell() { return text_cell(""); }
+TableCell empty_cell() {
+    return text_cell("");
+}
 
-std::size_t total_runs(const RunGroup& g) { return g.runs.size() + g.failed; }
+std::size_t total_runs(const RunGroup& g) {
+    return g.runs.size() + g.failed;
+}
 
 std::string runs_note(const StudyIndex& index, const std::string& problem) {
     std::size_t least = 0;
@@ -94,8 +100,8 @@ Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
     Table t;
     t.id = "table2_fitness" + p.suffix;
     t.title = "Table 2: Fitness of different algorithms (" + p.spec + ")";
-    t.header = {"Algorithm", "Runs", "Evaluations (mean)", "Mean f", "Std f", "Paper mean", "Paper std",
-                "Mean gap f - f*", "f*"};
+    t.header = {"Algorithm",  "Runs",      "Evaluations (mean)", "Mean f", "Std f",
+                "Paper mean", "Paper std", "Mean gap f - f*",    "f*"};
     const auto algorithms = index.algorithms_on(p.spec);
     double best_mean = INFINITY;
     for (const auto& a : algorithms)
@@ -113,9 +119,9 @@ Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
                 optima.push_back(*r->f_opt);
             }
         }
-        std::vector<TableCell> row = {text_cell(a),
-                                      text_cell(std::to_string(g.runs.size()) + "/" + std::to_string(total_runs(g))),
-                                      number_cell(mean(evaluations), 6), number_cell(s.mean), number_cell(s.std)};
+        std::vector<TableCell> row = {
+            text_cell(a), text_cell(std::to_string(g.runs.size()) + "/" + std::to_string(total_runs(g))),
+            number_cell(mean(evaluations), 6), number_cell(s.mean), number_cell(s.std)};
         row[3].bold = s.mean == best_mean;
         if (const auto* f = published_fitness(p, a)) {
             row.push_back(number_cell(f->mean));
@@ -131,7 +137,8 @@ Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
     t.caption = "Final best fitness over " + runs_note(index, p.spec) +
                 " (mean, sample std); lowest mean in bold. f* is the exact least-squares optimum of the "
                 "problem; the gap f - f* is what an optimiser could still gain. Paper values: " +
-                std::string(paper_citation) + (p.published ? ", " + std::string(p.published->table) : "") + ".";
+                std::string(paper_citation) + (p.published ? ", " + std::string(p.published->table) : "") +
+                ".";
     return t;
 }
 
@@ -170,7 +177,8 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
     if (!theta.empty()) {
         values_row("theta* (least squares)", "value", theta, 5, empty_cell());
         if (!truth.empty())
-            values_row("theta* (least squares)", "error % vs true", relative_pct(theta, truth), 3, empty_cell());
+            values_row("theta* (least squares)", "error % vs true", relative_pct(theta, truth), 3,
+                       empty_cell());
     }
     for (const auto& a : algorithms) {
         const RunGroup& g = *index.find(p.spec, a);
@@ -198,7 +206,8 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
                     sum += std::pow((r->best_x[k] - theta[k]) / theta[k], 2);
                 distances.push_back(100.0 * std::sqrt(sum / static_cast<double>(d)));
             }
-            values_row(a, "deviation % from theta*", relative_pct(means, theta), 3, number_cell(mean(distances), 3));
+            values_row(a, "deviation % from theta*", relative_pct(means, theta), 3,
+                       number_cell(mean(distances), 3));
         }
         if (const auto* published = published_identification(p, a)) {
             std::vector<double> identified(d, NAN);
@@ -212,13 +221,14 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
             values_row(a, "paper |error| %", errors, 3, empty_cell());
         }
     }
-    t.caption = "Identified parameters over " + runs_note(index, p.spec) +
-                ": mean and sample std of the best x of each run; error % = 100 (mean - true) / true. theta* "
-                "is the exact least-squares optimum (what no optimiser can beat); deviation % = 100 (mean - "
-                "theta*) / theta*, and Overall is the mean over runs of the RMS relative distance to theta* in %. "
-                "Paper values: " +
-                std::string(paper_citation) + (p.published ? ", " + std::string(p.published->table) : "") +
-                " (its errors are magnitudes).";
+    t.caption =
+        "Identified parameters over " + runs_note(index, p.spec) +
+        ": mean and sample std of the best x of each run; error % = 100 (mean - true) / true. theta* "
+        "is the exact least-squares optimum (what no optimiser can beat); deviation % = 100 (mean - "
+        "theta*) / theta*, and Overall is the mean over runs of the RMS relative distance to theta* in %. "
+        "Paper values: " +
+        std::string(paper_citation) + (p.published ? ", " + std::string(p.published->table) : "") +
+        " (its errors are magnitudes).";
     return t;
 }
 
@@ -236,8 +246,8 @@ Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& 
     for (const auto& p : problems) {
         if (p.published == nullptr)
             continue;
-        const std::string condition = format_number(p.published->load) + " N m, " +
-                                      format_number(p.published->speed) + " rpm";
+        const std::string condition =
+            format_number(p.published->load) + " N m, " + format_number(p.published->speed) + " rpm";
         for (const auto& a : index.algorithms_on(p.spec)) {
             const RunGroup& g = *index.find(p.spec, a);
             const RunRecord& first = *g.runs.front();
@@ -264,14 +274,16 @@ Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& 
             if (const auto* published = published_identification(p, a)) {
                 std::vector<TableCell> paper_row = {text_cell(condition), text_cell(a), text_cell("paper")};
                 for (std::size_t j = 0; j < pmsm_parameter_names.size(); ++j)
-                    paper_row.push_back(text_cell(value_and_error(published->identified[j], published->error_pct[j])));
+                    paper_row.push_back(
+                        text_cell(value_and_error(published->identified[j], published->error_pct[j])));
                 t.add_row(std::move(paper_row));
             }
         }
     }
-    t.caption = "Identified value / |error| against the true value, this study (mean over runs) beside the paper's "
-                "Table 4 (" +
-                std::string(paper_citation) + ").";
+    t.caption =
+        "Identified value / |error| against the true value, this study (mean over runs) beside the paper's "
+        "Table 4 (" +
+        std::string(paper_citation) + ").";
     return t;
 }
 

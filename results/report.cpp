@@ -1,8 +1,5 @@
 #include "results/report.hpp"
 
-#include <cstdlib>
-#include <stdexcept>
-
 #include "results/comparison_tables.hpp"
 #include "results/critical_difference.hpp"
 #include "results/csv.hpp"
@@ -11,6 +8,9 @@
 #include "results/paper_tables.hpp"
 #include "results/study_index.hpp"
 #include "results/table.hpp"
+
+#include <cstdlib>
+#include <stdexcept>
 
 namespace mhb {
 
@@ -46,8 +46,10 @@ std::string latex_document(const std::vector<Table>& tables) {
 }
 
 void draw_figures(const ReportOptions& options, const fs::path& out_dir, std::ostream& console) {
-    const std::string how = "install matplotlib (apt install python3-matplotlib) and run mhbench report again, or "
-                            "run scripts/plot_study.py " + out_dir.string();
+    const std::string how =
+        "install matplotlib (apt install python3-matplotlib) and run mhbench report again, or "
+        "run scripts/plot_study.py " +
+        out_dir.string();
     if (options.plot_script.empty() || !fs::exists(options.plot_script)) {
         console << "figures skipped: the plotting script " << options.plot_script.string()
                 << " was not found; the tables and curve data are written\n";
@@ -58,8 +60,8 @@ void draw_figures(const ReportOptions& options, const fs::path& out_dir, std::os
         console << "figures skipped: no Python with matplotlib found; " << how << '\n';
         return;
     }
-    const std::string command =
-        shell_quote(*python) + " " + shell_quote(options.plot_script.string()) + " " + shell_quote(out_dir.string());
+    const std::string command = shell_quote(*python) + " " + shell_quote(options.plot_script.string()) + " " +
+                                shell_quote(out_dir.string());
     if (std::system(command.c_str()) != 0)
         throw std::runtime_error("the plotting script failed: " + command);
     console << "figures: " << (out_dir / "figures").string() << '\n';
@@ -98,8 +100,9 @@ void build_report(const StudyData& study, const ReportOptions& options, std::ost
             << index.algorithms().size() << " algorithms; reference " << comparison.reference << "\n\n";
     // The context (version, commit, compiler, threads, date) heads the combined report, so a table
     // read later says what produced it.
-    std::string all_markdown = "# mhbench report: " + study.directory.string() + "\n\nStudy context (context.ini):\n\n```\n" +
-                               study.context_text + (study.context_text.empty() || study.context_text.back() == '\n' ? "" : "\n") +
+    std::string all_markdown = "# mhbench report: " + study.directory.string() +
+                               "\n\nStudy context (context.ini):\n\n```\n" + study.context_text +
+                               (study.context_text.empty() || study.context_text.back() == '\n' ? "" : "\n") +
                                "```\n\n";
     for (const auto& t : tables) {
         const std::string markdown = render_markdown(t);

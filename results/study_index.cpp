@@ -66,8 +66,9 @@ StudyIndex::StudyIndex(const StudyData& data) {
                     ++group.failed;
             }
             failed_ += group.failed;
-            std::stable_sort(group.runs.begin(), group.runs.end(),
-                             [](const RunRecord* x, const RunRecord* y) { return x->run_index < y->run_index; });
+            std::stable_sort(
+                group.runs.begin(), group.runs.end(),
+                [](const RunRecord* x, const RunRecord* y) { return x->run_index < y->run_index; });
             if (!group.runs.empty() || group.failed > 0)
                 groups_.push_back(std::move(group));
         }

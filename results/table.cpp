@@ -1,10 +1,10 @@
 #include "results/table.hpp"
 
+#include "results/csv.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
-
-#include "results/csv.hpp"
 
 namespace mhb {
 
@@ -102,8 +102,8 @@ std::string render_latex(const Table& table) {
         spec += 'r';
     std::string out = "% " + table.title + " (written by mhbench report)\n";
     out += "\\begin{table}[htbp]\n\\centering\n\\small\n";
-    out += "\\caption{" + latex_escape(table.title) + (table.caption.empty() ? "" : ". " + latex_escape(table.caption)) +
-           "}\n";
+    out += "\\caption{" + latex_escape(table.title) +
+           (table.caption.empty() ? "" : ". " + latex_escape(table.caption)) + "}\n";
     out += "\\label{tab:" + table.id + "}\n";
     out += "\\begin{tabular}{" + spec + "}\n\\toprule\n";
     for (std::size_t c = 0; c < table.header.size(); ++c)
@@ -131,7 +131,8 @@ std::string render_csv(const Table& table) {
     out += "\n";
     for (const auto& row : table.rows) {
         for (std::size_t c = 0; c < row.size(); ++c)
-            out.append(c == 0 ? "" : ",").append(csv_field(row[c].value.empty() ? row[c].text : row[c].value));
+            out.append(c == 0 ? "" : ",")
+                .append(csv_field(row[c].value.empty() ? row[c].text : row[c].value));
         out += "\n";
     }
     return out;
@@ -159,6 +160,8 @@ TableCell number_cell(double value, int significant) {
     return {format_number(value, significant), csv_number(value), false};
 }
 
-TableCell text_cell(std::string text) { return {std::move(text), "", false}; }
+TableCell text_cell(std::string text) {
+    return {std::move(text), "", false};
+}
 
 } // namespace mhb

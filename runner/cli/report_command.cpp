@@ -1,12 +1,12 @@
 // `mhbench report DIR`: rebuilds every table, the curve data and the figures of a finished study
 // from its directory alone. Thin: parses the command line, loads the study, calls build_report.
-#include <boost/program_options.hpp>
-#include <iostream>
-#include <sstream>
-
 #include "results/report.hpp"
 #include "results/store.hpp"
 #include "runner/cli/command.hpp"
+
+#include <boost/program_options.hpp>
+#include <iostream>
+#include <sstream>
 
 namespace mhb::cli {
 
@@ -30,8 +30,8 @@ int run_report_command(const std::vector<std::string>& args) {
         "    across problems;\n"
         "  - curve data (CSV) and figures (PDF/PNG, needs matplotlib: apt install python3-matplotlib).\n"
         "The Markdown tables are also printed here.\n\nOptions");
-    visible.add_options()("help,h", "this text")(
-        "out", po::value(&out_dir), "report directory (default: DIR/report)")(
+    visible.add_options()("help,h", "this text")("out", po::value(&out_dir),
+                                                 "report directory (default: DIR/report)")(
         "reference", po::value(&reference),
         "algorithm the tests compare against: a full spec or a name of the study (default: itlbo, else the "
         "first algorithm)")("alpha", po::value(&alpha)->default_value(0.05, "0.05"),

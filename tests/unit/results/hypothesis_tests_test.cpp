@@ -1,11 +1,10 @@
 // The nonparametric tests against published worked examples and independent implementations.
 // Where a value comes from SciPy, it is scipy 1.10.1 (Debian's /usr/bin/python3), whose
 // mannwhitneyu / wilcoxon / friedmanchisquare implement the same definitions independently.
-#include <gtest/gtest.h>
-
-#include <stdexcept>
-
 #include "results/hypothesis_tests.hpp"
+
+#include <gtest/gtest.h>
+#include <stdexcept>
 
 namespace mhb {
 namespace {
@@ -114,12 +113,12 @@ TEST(Friedman, MatchesRsRoundingTimesExample) {
     // "Friedman chi-squared = 11.143, df = 2, p-value = 0.003805"; scipy.stats.friedmanchisquare
     // gives 11.142857142857132 and p = 0.003805040775511383; average ranks (scipy rankdata) are
     // 2.40909091, 2.13636364, 1.45454545.
-    const double data[22][3] = {{5.40, 5.50, 5.55}, {5.85, 5.70, 5.75}, {5.20, 5.60, 5.50}, {5.55, 5.50, 5.40},
-                                {5.90, 5.85, 5.70}, {5.45, 5.55, 5.60}, {5.40, 5.40, 5.35}, {5.45, 5.50, 5.35},
-                                {5.25, 5.15, 5.00}, {5.85, 5.80, 5.70}, {5.25, 5.20, 5.10}, {5.65, 5.55, 5.45},
-                                {5.60, 5.35, 5.45}, {5.05, 5.00, 4.95}, {5.50, 5.50, 5.40}, {5.45, 5.55, 5.50},
-                                {5.55, 5.55, 5.35}, {5.45, 5.50, 5.55}, {5.50, 5.45, 5.25}, {5.65, 5.60, 5.40},
-                                {5.70, 5.65, 5.55}, {6.30, 6.30, 6.25}};
+    const double data[22][3] = {
+        {5.40, 5.50, 5.55}, {5.85, 5.70, 5.75}, {5.20, 5.60, 5.50}, {5.55, 5.50, 5.40}, {5.90, 5.85, 5.70},
+        {5.45, 5.55, 5.60}, {5.40, 5.40, 5.35}, {5.45, 5.50, 5.35}, {5.25, 5.15, 5.00}, {5.85, 5.80, 5.70},
+        {5.25, 5.20, 5.10}, {5.65, 5.55, 5.45}, {5.60, 5.35, 5.45}, {5.05, 5.00, 4.95}, {5.50, 5.50, 5.40},
+        {5.45, 5.55, 5.50}, {5.55, 5.55, 5.35}, {5.45, 5.50, 5.55}, {5.50, 5.45, 5.25}, {5.65, 5.60, 5.40},
+        {5.70, 5.65, 5.55}, {6.30, 6.30, 6.25}};
     std::vector<std::vector<double>> blocks;
     for (const auto& row : data)
         blocks.push_back({row[0], row[1], row[2]});

@@ -3,19 +3,18 @@
 // golden copy in tests/data/golden/ (regenerate with MHB_UPDATE_GOLDEN=1 after a deliberate change
 // and review the diff), the LaTeX compiles where a TeX engine exists, figures are drawn or skipped
 // with one clear line, and bad options or damaged directories give clear errors.
-#include <gtest/gtest.h>
+#include "results/critical_difference.hpp"
+#include "results/csv.hpp"
+#include "results/report.hpp"
+#include "results/store.hpp"
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 #include <stdexcept>
-
-#include "results/critical_difference.hpp"
-#include "results/csv.hpp"
-#include "results/report.hpp"
-#include "results/store.hpp"
 
 namespace mhb {
 namespace {
@@ -51,7 +50,8 @@ RunRecord pmsm_run(std::size_t a, std::int64_t i, std::int64_t id) {
         std::vector<double> x = r.best_x;
         for (auto& v : x)
             v *= 1.0 + 0.1 * static_cast<double>(2 - it);
-        r.curve.push_back({it, r.evaluations / 3 * (it + 1), r.best_f * static_cast<double>(1 << (2 - it)), x});
+        r.curve.push_back(
+            {it, r.evaluations / 3 * (it + 1), r.best_f * static_cast<double>(1 << (2 - it)), x});
     }
     r.checkpoints = {{1, r.best_f * 8}, {10, r.best_f * 4}, {100, r.best_f * 2}, {r.evaluations, r.best_f}};
     return r;
@@ -124,9 +124,9 @@ TEST_F(Report, Table2CarriesMeasuredAndPublishedFitness) {
     const CsvTable t = read_csv(study_dir_ / "report" / "table2_fitness.csv");
     ASSERT_EQ(t.rows.size(), 3u);
     EXPECT_EQ(t.rows[0][t.column("Algorithm")], "itlbo");
-    EXPECT_NEAR(t.number(0, t.column("Mean f")), 4.02, 1e-12);           // by hand, see pmsm_run
+    EXPECT_NEAR(t.number(0, t.column("Mean f")), 4.02, 1e-12);                // by hand, see pmsm_run
     EXPECT_NEAR(t.number(0, t.column("Std f")), 0.015811388300841896, 1e-12); // 0.01 sqrt(2.5)
-    EXPECT_EQ(t.number(0, t.column("Paper mean")), 3.9904);              // the paper's Table 2
+    EXPECT_EQ(t.number(0, t.column("Paper mean")), 3.9904);                   // the paper's Table 2
     EXPECT_EQ(t.number(1, t.column("Paper std")), 1.6258);
     EXPECT_EQ(t.number(2, t.column("Paper mean")), 5.5904);
     EXPECT_EQ(t.number(0, t.column("Evaluations (mean)")), 1200.0);
@@ -218,8 +218,10 @@ TEST_F(Report, OutputsMatchGoldenFiles) {
             fs::create_directories(golden);
             fs::copy_file(entry.path(), golden / name, fs::copy_options::overwrite_existing);
         }
-        ASSERT_TRUE(fs::exists(golden / name)) << name << " has no golden copy (MHB_UPDATE_GOLDEN=1 makes it)";
-        EXPECT_EQ(read_text(entry.path()), read_text(golden / name)) << name << " differs from its golden copy";
+        ASSERT_TRUE(fs::exists(golden / name))
+            << name << " has no golden copy (MHB_UPDATE_GOLDEN=1 makes it)";
+        EXPECT_EQ(read_text(entry.path()), read_text(golden / name))
+            << name << " differs from its golden copy";
         ++compared;
     }
     EXPECT_GE(compared, 25u);
@@ -248,7 +250,7 @@ TEST_F(Report, IohExportParsesBackWithTheRunsValues) {
     for (std::size_t i = 0; i < runs.size(); ++i) {
         ASSERT_FALSE(runs[i].empty());
         for (std::size_t k = 1; k < runs[i].size(); ++k) {
-            EXPECT_GT(runs[i][k].first, runs[i][k - 1].first);  // evaluations increase
+            EXPECT_GT(runs[i][k].first, runs[i][k - 1].first);   // evaluations increase
             EXPECT_LT(runs[i][k].second, runs[i][k - 1].second); // only improvements
         }
         // The last improvement is the run's final value, 5.0 + 0.2 i (see pmsm_run).
@@ -274,7 +276,8 @@ TEST_F(Report, LatexCompilesWhereATexEngineExists) {
     if (std::system("command -v pdflatex >/dev/null 2>&1") != 0)
         GTEST_SKIP() << "no pdflatex on this machine";
     const fs::path dir = study_dir_ / "report";
-    const std::string command = "cd '" + dir.string() + "' && pdflatex -interaction=nonstopmode -halt-on-error " +
+    const std::string command = "cd '" + dir.string() +
+                                "' && pdflatex -interaction=nonstopmode -halt-on-error " +
                                 "report.tex >/dev/null 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0) << "see " << (dir / "report.log").string();
 }
@@ -302,9 +305,10 @@ TEST(ReportFigures, DrawnWhenMatplotlibIsThere) {
     std::ostringstream console;
     build_report(load_study(dir), options, console);
     const fs::path figures = dir / "report" / "figures";
-    for (const char* name : {"convergence_iteration_pmsm_load_2_speed_2500", "convergence_evaluations_sphere_dim_2",
-                             "parameter_Rs_pmsm_load_2_speed_2500", "parameter_psi_pmsm_load_2_speed_2500",
-                             "final_values_sphere_dim_2", "ecdf_target_sphere_dim_2", "critical_difference"})
+    for (const char* name :
+         {"convergence_iteration_pmsm_load_2_speed_2500", "convergence_evaluations_sphere_dim_2",
+          "parameter_Rs_pmsm_load_2_speed_2500", "parameter_psi_pmsm_load_2_speed_2500",
+          "final_values_sphere_dim_2", "ecdf_target_sphere_dim_2", "critical_difference"})
         for (const char* ext : {".pdf", ".png"})
             EXPECT_GT(fs::file_size(figures / (std::string(name) + ext)), 1000u) << name << ext;
 }
@@ -325,7 +329,8 @@ TEST(ReportOptionsCheck, BadOptionsAreClearErrors) {
         build_report(study, options, console);
         FAIL();
     } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("the study has: itlbo, tlbo:np=50, pso"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("the study has: itlbo, tlbo:np=50, pso"), std::string::npos)
+            << e.what();
     }
     options.reference = "tlbo"; // a name that one algorithm has
     EXPECT_NO_THROW(build_report(study, options, console));
