@@ -135,4 +135,35 @@ std::string final_values(const StudyIndex& index) {
     return out;
 }
 
+const std::vector<double>& ecdf_target_gaps() {
+    static const std::vector<double> gaps = {1e2, 1e1, 1e0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+    return gaps;
+}
+
+std::string target_hits(const StudyIndex& index) {
+    std::string out = "problem,algorithm,run,target_gap,evaluations\n";
+    for (const auto& g : index.groups())
+        for (const auto* r : g.runs) {
+            if (!r->f_opt)
+                continue;
+            Steps points;
+            for (const auto& p : r->curve)
+                points.emplace_back(p.evaluations, p.best_f);
+            for (const auto& c : r->checkpoints)
+                points.emplace_back(c.evaluations, c.best_f);
+            std::stable_sort(points.begin(), points.end(),
+                             [](const auto& a, const auto& b) { return a.first < b.first; });
+            for (const double gap : ecdf_target_gaps()) {
+                std::string hit;
+                for (const auto& [evaluations, f] : points)
+                    if (f - *r->f_opt <= gap) {
+                        hit = std::to_string(evaluations);
+                        break;
+                    }
+                out += prefix(g) + std::to_string(r->run_index) + ',' + csv_number(gap) + ',' + hit + '\n';
+            }
+        }
+    return out;
+}
+
 } // namespace mhb

@@ -21,4 +21,11 @@ std::string parameter_curves_by_iteration(const StudyIndex& index);
 // problem,algorithm,run,best_f,evaluations,evals_to_target
 std::string final_values(const StudyIndex& index);
 
+// The gaps f - f* of the fixed-target ECDF, as COCO's bbob targets: 1e2, 1e1, ..., 1e-8.
+const std::vector<double>& ecdf_target_gaps();
+// problem,algorithm,run,target_gap,evaluations: the first recorded evaluation count (iteration
+// ends and checkpoints) at which best-so-far f - f* <= target_gap; empty when never reached. Only
+// problems with a known optimum.
+std::string target_hits(const StudyIndex& index);
+
 } // namespace mhb

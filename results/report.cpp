@@ -124,6 +124,7 @@ void build_report(const StudyData& study, const ReportOptions& options, std::ost
     write_file_atomically(out_dir / "curves_evaluations.csv", fitness_curves_by_evaluations(index));
     write_file_atomically(out_dir / "parameters_iteration.csv", parameter_curves_by_iteration(index));
     write_file_atomically(out_dir / "final_values.csv", final_values(index));
+    write_file_atomically(out_dir / "target_hits.csv", target_hits(index));
     const fs::path cd_path = out_dir / "critical_difference.csv";
     if (const auto cd = critical_difference_data(index, options.alpha))
         write_file_atomically(cd_path, *cd);

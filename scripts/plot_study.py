@@ -3,8 +3,8 @@
 
 Usage: plot_study.py REPORT_DIR
 
-Reads REPORT_DIR/curves_iteration.csv, curves_evaluations.csv, parameters_iteration.csv and
-final_values.csv (written by `mhbench report`) and writes PDF and PNG files to REPORT_DIR/figures/:
+Reads REPORT_DIR/curves_iteration.csv, curves_evaluations.csv, parameters_iteration.csv,
+final_values.csv, target_hits.csv and critical_difference.csv (written by `mhbench report`) and writes PDF and PNG files to REPORT_DIR/figures/:
   convergence_iteration_<problem>   mean best-so-far vs iteration, std band, log y (the paper's Fig. 5)
   convergence_evaluations_<problem> median best-so-far vs evaluations, IQR band, log-log
   parameter_<name>_<problem>        mean best-so-far parameter vs iteration, the true value as a
@@ -12,6 +12,9 @@ final_values.csv (written by `mhbench report`) and writes PDF and PNG files to R
   final_values_<problem>            box plots of the final values per algorithm
   ecdf_target_<problem>             fixed-target ECDF: fraction of runs that reached the study's
                                     target within a number of evaluations (when targets were set)
+  ecdf_targets_<problem>            fixed-target ECDF over the targets f - f* = 1e2 ... 1e-8 (COCO's
+                                    bbob targets): fraction of (run, target) pairs reached within a
+                                    number of evaluations (problems with a known optimum)
   critical_difference               Friedman average ranks with the Nemenyi critical difference
                                     (Demsar 2006), bars joining algorithms that do not differ
 Needs matplotlib (Debian: apt install python3-matplotlib); uses the Agg backend, opens no window.
@@ -160,7 +163,29 @@ def main():
         ax.legend(fontsize="small")
         save(fig, out_dir, "ecdf_target_" + slug(problem))
 
+    target_ecdfs(report, out_dir)
     critical_difference(report, out_dir)
+
+
+def target_ecdfs(report, out_dir):
+    hits = read_rows(os.path.join(report, "target_hits.csv"))
+    for (problem,), rows in group(hits, "problem").items():
+        fig, ax = plt.subplots(figsize=(6, 4))
+        largest = 1.0
+        for (algorithm,), r in group(rows, "algorithm").items():
+            reached = sorted(number(row["evaluations"]) for row in r if row["evaluations"])
+            largest = max([largest] + reached)
+            x = [1.0] + reached
+            y = [0.0] + [(i + 1) / len(r) for i in range(len(reached))]
+            ax.step(x, y, where="post", label=algorithm)
+        ax.set_xscale("log")
+        ax.set_xlim(1, largest * 1.5)
+        ax.set_ylim(0, 1.02)
+        ax.set_xlabel("evaluations")
+        ax.set_ylabel("fraction of (run, target) pairs reached")
+        ax.set_title(problem + ": targets f - f* = 1e2 ... 1e-8")
+        ax.legend(fontsize="small")
+        save(fig, out_dir, "ecdf_targets_" + slug(problem))
 
 
 def critical_difference(report, out_dir):

@@ -206,6 +206,21 @@ TEST_F(Report, CurveDataAverageOverRuns) {
     EXPECT_EQ(p.number(2, p.column("true")), 0.33);
 }
 
+TEST_F(Report, TargetHitsAreTheFirstRecordedEvaluationsWithinEachGap) {
+    const CsvTable t = read_csv(study_dir_ / "report" / "target_hits.csv");
+    // 2 problems x 3 algorithms x 5 runs x 11 targets.
+    ASSERT_EQ(t.rows.size(), 330u);
+    // PMSM, ITLBO run 0: final f = 4.0, f* = 3.9, recorded points (evaluations, f): checkpoints
+    // (1, 32), (10, 16), (100, 8), curve (400, 16), (800, 8), (1200, 4), checkpoint (1200, 4).
+    // Gap 1e2 is met at once (32 - 3.9 <= 100): evaluation 1; gap 10 first at 100 (8 - 3.9);
+    // gap 1 at 1200; gap 0.1 never, since 4.0 - 3.9 is 0.10000000000000009 in doubles; gap 0.01 never.
+    EXPECT_EQ(t.rows[0][t.column("evaluations")], "1");
+    EXPECT_EQ(t.rows[1][t.column("evaluations")], "100");
+    EXPECT_EQ(t.rows[2][t.column("evaluations")], "1200");
+    EXPECT_EQ(t.rows[3][t.column("evaluations")], "");
+    EXPECT_EQ(t.rows[4][t.column("evaluations")], "");
+}
+
 TEST_F(Report, OutputsMatchGoldenFiles) {
     const fs::path golden = fs::path(MHB_TEST_DATA_DIR) / "golden" / "report";
     const bool update = std::getenv("MHB_UPDATE_GOLDEN") != nullptr;
@@ -308,7 +323,8 @@ TEST(ReportFigures, DrawnWhenMatplotlibIsThere) {
     for (const char* name :
          {"convergence_iteration_pmsm_load_2_speed_2500", "convergence_evaluations_sphere_dim_2",
           "parameter_Rs_pmsm_load_2_speed_2500", "parameter_psi_pmsm_load_2_speed_2500",
-          "final_values_sphere_dim_2", "ecdf_target_sphere_dim_2", "critical_difference"})
+          "final_values_sphere_dim_2", "ecdf_target_sphere_dim_2", "critical_difference",
+          "ecdf_targets_pmsm_load_2_speed_2500"})
         for (const char* ext : {".pdf", ".png"})
             EXPECT_GT(fs::file_size(figures / (std::string(name) + ext)), 1000u) << name << ext;
 }
