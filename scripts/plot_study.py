@@ -148,44 +148,40 @@ def main():
 
         if not any(row["evals_to_target"] for row in rows):
             continue
-        fig, ax = plt.subplots(figsize=(6, 4))
-        for (algorithm,), r in by_algorithm.items():
-            hits = sorted(number(row["evals_to_target"]) for row in r if row["evals_to_target"])
-            budget = max(number(row["evaluations"]) for row in r)
-            x = [1.0] + hits + [budget]
-            y = [0.0] + [(i + 1) / len(r) for i in range(len(hits))] + [len(hits) / len(r)]
-            ax.step(x, y, where="post", label=algorithm)
-        ax.set_xscale("log")
-        ax.set_ylim(0, 1.02)
-        ax.set_xlabel("evaluations")
-        ax.set_ylabel("fraction of runs that reached the target")
-        ax.set_title(problem + " (fixed-target ECDF)")
-        ax.legend(fontsize="small")
-        save(fig, out_dir, "ecdf_target_" + slug(problem))
+        curves = [(algorithm, [number(row["evals_to_target"]) for row in r if row["evals_to_target"]], len(r))
+                  for (algorithm,), r in by_algorithm.items()]
+        ecdf_figure(curves, "fraction of runs that reached the target", problem + " (fixed-target ECDF)",
+                    "ecdf_target_" + slug(problem), out_dir)
 
     target_ecdfs(report, out_dir)
     critical_difference(report, out_dir)
 
 
+def ecdf_figure(curves, ylabel, title, name, out_dir):
+    """curves: (label, evaluations at which a run / target was reached, number of trials)."""
+    fig, ax = plt.subplots(figsize=(6, 4))
+    right = 1.5 * max([1.0] + [e for _, reached, _ in curves for e in reached])
+    for label, reached, trials in curves:
+        reached = sorted(reached)
+        y = [0.0] + [(i + 1) / trials for i in range(len(reached))]
+        ax.step([1.0] + reached + [right], y + [y[-1]], where="post", label=label)
+    ax.set_xscale("log")
+    ax.set_xlim(1, right)
+    ax.set_ylim(0, 1.02)
+    ax.set_xlabel("evaluations")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize="small")
+    save(fig, out_dir, name)
+
+
 def target_ecdfs(report, out_dir):
     hits = read_rows(os.path.join(report, "target_hits.csv"))
     for (problem,), rows in group(hits, "problem").items():
-        fig, ax = plt.subplots(figsize=(6, 4))
-        largest = 1.0
-        for (algorithm,), r in group(rows, "algorithm").items():
-            reached = sorted(number(row["evaluations"]) for row in r if row["evaluations"])
-            largest = max([largest] + reached)
-            x = [1.0] + reached
-            y = [0.0] + [(i + 1) / len(r) for i in range(len(reached))]
-            ax.step(x, y, where="post", label=algorithm)
-        ax.set_xscale("log")
-        ax.set_xlim(1, largest * 1.5)
-        ax.set_ylim(0, 1.02)
-        ax.set_xlabel("evaluations")
-        ax.set_ylabel("fraction of (run, target) pairs reached")
-        ax.set_title(problem + ": targets f - f* = 1e2 ... 1e-8")
-        ax.legend(fontsize="small")
-        save(fig, out_dir, "ecdf_targets_" + slug(problem))
+        curves = [(algorithm, [number(row["evaluations"]) for row in r if row["evaluations"]], len(r))
+                  for (algorithm,), r in group(rows, "algorithm").items()]
+        ecdf_figure(curves, "fraction of (run, target) pairs reached", problem + ": targets f - f* = 1e2 ... 1e-8",
+                    "ecdf_targets_" + slug(problem), out_dir)
 
 
 def critical_difference(report, out_dir):
