@@ -95,9 +95,13 @@ void build_report(const StudyData& study, const ReportOptions& options, std::ost
     for (auto& t : comparison_tables(index, comparison))
         tables.push_back(std::move(t));
 
-    console << "mhbench report of " << study.directory.string() << ": " << study.runs.size() << " runs ("
-            << index.failed_runs() << " failed), " << index.problems().size() << " problems, "
-            << index.algorithms().size() << " algorithms; reference " << comparison.reference << "\n\n";
+    const auto count = [](std::size_t n, const char* noun) {
+        return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+    };
+    console << "mhbench report of " << study.directory.string() << ": " << count(study.runs.size(), "run")
+            << " (" << index.failed_runs() << " failed), " << count(index.problems().size(), "problem")
+            << ", " << count(index.algorithms().size(), "algorithm") << "; reference " << comparison.reference
+            << "\n\n";
     // The context (version, commit, compiler, threads, date) heads the combined report, so a table
     // read later says what produced it.
     std::string all_markdown = "# mhbench report: " + study.directory.string() +

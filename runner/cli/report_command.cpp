@@ -63,9 +63,11 @@ int run_report_command(const std::vector<std::string>& args) {
     options.figures = vm.count("no-figures") == 0;
     options.formats.clear();
     std::stringstream list(formats);
-    for (std::string f; std::getline(list, f, ',');)
-        if (!f.empty())
-            options.formats.insert(f);
+    for (std::string f; std::getline(list, f, ',');) {
+        const auto first = f.find_first_not_of(' ');
+        if (first != std::string::npos) // "md, tex" is meant as "md,tex"
+            options.formats.insert(f.substr(first, f.find_last_not_of(' ') - first + 1));
+    }
     options.plot_script = std::filesystem::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
     const StudyData study = load_study(study_dir);
     build_report(study, options, std::cout);
