@@ -14,11 +14,13 @@
 namespace mhb::cli {
 
 // One line per subcommand; each is defined in its own file.
+int run_report_command(const std::vector<std::string>& args);
 
 namespace {
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> table = {
+        {"report", "tables, statistics, curve data and figures of a finished study", run_report_command},
     };
     return table;
 }

@@ -1,0 +1,46 @@
+// The statistics tables of a study (issue 5), for any problems:
+//  - "summary": per problem x algorithm the descriptive statistics, evaluations spent, error to the
+//    known optimum, success rate and ERT (COCO) to the study's target, median values at fixed
+//    fractions of the evaluation budget;
+//  - "tests": per problem each algorithm against the reference: Wilcoxon rank-sum p, Holm-adjusted
+//    across that problem's comparisons, Vargha-Delaney A12 and the +/=/- marker;
+//  - "comparison": the generic layout, problems as rows and algorithms as columns, mean (std) and
+//    marker, best mean in bold;
+//  - "across_problems" (two or more problems): Friedman average ranks with the Holm post-hoc against
+//    the reference, and Wilcoxon signed-rank on per-problem medians (paired by problem).
+#pragma once
+
+#include "results/study_index.hpp"
+#include "results/table.hpp"
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mhb {
+
+struct ComparisonOptions {
+    std::string reference; // an algorithm spec of the study
+    double alpha = 0.05;
+    std::vector<double> budget_fractions = {0.01, 0.1, 1.0};
+};
+
+// The algorithm spec `requested` names: a full spec of the study, or a name (before ':') that
+// exactly one of its algorithms has. Without a request: the first ITLBO, else the first algorithm.
+// Throws std::invalid_argument listing the study's algorithms when it names none or several.
+std::string resolve_reference(const StudyIndex& index, const std::optional<std::string>& requested);
+
+// "+" when `algorithm` is significantly better (lower) than the reference at `alpha` after
+// adjustment, "-" when significantly worse, "=" otherwise. a12 is A12(algorithm, reference).
+std::string comparison_marker(double adjusted_p, double a12, double alpha);
+
+// The blocks of the across-problem tests: the problems on which every algorithm has runs and, per
+// problem, each algorithm's median final value (columns in study order). Empty with fewer than
+// two such problems or two algorithms.
+std::optional<std::pair<std::vector<std::string>, std::vector<std::vector<double>>>>
+per_problem_medians(const StudyIndex& index);
+
+std::vector<Table> comparison_tables(const StudyIndex& index, const ComparisonOptions& options);
+
+} // namespace mhb

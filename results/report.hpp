@@ -1,0 +1,38 @@
+// `mhbench report`: everything rebuilt from a finished study directory alone. Writes into the
+// report directory the tables (Markdown, LaTeX, CSV; the paper's Tables 2-4 for PMSM problems, the
+// statistics tables for any problem), the curve data (CSV) and, when a Python with matplotlib is
+// found, the figures (figures/*.pdf and *.png, drawn by scripts/plot_study.py from the curve data),
+// and the runs in the IOHprofiler format (ioh/, for IOHanalyzer).
+// Prints the Markdown tables to the console. The runner calls it at the end of `mhbench run`.
+#pragma once
+
+#include "results/store.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace mhb {
+
+struct ReportOptions {
+    std::filesystem::path out_dir;        // empty: <study directory>/report
+    std::optional<std::string> reference; // algorithm to test against (spec or unique name)
+    double alpha = 0.05;                  // significance level of the markers
+    std::set<std::string> formats = {"md", "tex", "csv"};
+    bool figures = true;
+    std::filesystem::path plot_script; // scripts/plot_study.py; empty: figures are skipped
+    // Interpreters tried in order; the first that can `import matplotlib` draws the figures.
+    std::vector<std::string> python_candidates = {"/usr/bin/python3", "python3"};
+};
+
+// Checks the options (std::invalid_argument naming the option), then writes the report.
+// Throws std::runtime_error when a file cannot be written.
+void build_report(const StudyData& study, const ReportOptions& options, std::ostream& console);
+
+// The first candidate interpreter that can import matplotlib, if any.
+std::optional<std::string> find_matplotlib_python(const std::vector<std::string>& candidates);
+
+} // namespace mhb

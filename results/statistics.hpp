@@ -1,0 +1,46 @@
+// Descriptive statistics of a sample of final values (per problem x algorithm): mean and std
+// (two-pass, so large offsets lose no precision), quantiles as R's default (type 7), and the
+// expected running time to a target as COCO defines it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace mhb {
+
+struct Summary {
+    std::size_t n = 0;
+    double mean = 0.0;
+    double std = 0.0; // sample standard deviation (n - 1); 0 for n < 2
+    double median = 0.0;
+    double q25 = 0.0;
+    double q75 = 0.0;
+    double best = 0.0;  // minimum
+    double worst = 0.0; // maximum
+    [[nodiscard]] double iqr() const { return q75 - q25; }
+};
+
+// Throws std::invalid_argument on an empty sample.
+Summary summarize(const std::vector<double>& values);
+
+double mean(const std::vector<double>& values);
+// Sample standard deviation by the two-pass formula; 0 for fewer than two values.
+double standard_deviation(const std::vector<double>& values);
+// Quantile of probability p in [0, 1], linear interpolation between order statistics
+// (Hyndman & Fan type 7, R's and NumPy's default). `sorted` must be sorted ascending.
+double quantile_sorted(const std::vector<double>& sorted, double p);
+
+// One run as the ERT sees it: whether it reached the target and the evaluations it spent
+// (to the target if it did, in total otherwise).
+struct TargetHit {
+    bool success = false;
+    std::int64_t evaluations = 0;
+};
+
+// COCO's expected running time: the evaluations of all runs (to the target for successful runs,
+// all of them for unsuccessful ones) divided by the number of successful runs. Empty when no run
+// succeeded (ERT is infinite).
+std::optional<double> expected_running_time(const std::vector<TargetHit>& runs);
+
+} // namespace mhb

@@ -1,0 +1,167 @@
+#include "results/table.hpp"
+
+#include "results/csv.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace mhb {
+
+void Table::add_row(std::vector<TableCell> row) {
+    if (row.size() != header.size())
+        throw std::logic_error("table " + id + ": a row has " + std::to_string(row.size()) + " cells for " +
+                               std::to_string(header.size()) + " columns");
+    rows.push_back(std::move(row));
+}
+
+namespace {
+
+// Markdown cells may not hold '|' (it would split the cell).
+std::string markdown_text(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '|')
+            out += "\\|";
+        else
+            out += c;
+    }
+    return out;
+}
+
+} // namespace
+
+std::string render_markdown(const Table& table) {
+    std::string out = "### " + table.title + "\n\n|";
+    for (const auto& h : table.header)
+        out.append(" ").append(markdown_text(h)).append(" |");
+    out += "\n|";
+    for (std::size_t c = 0; c < table.header.size(); ++c)
+        out += c == 0 ? " :--- |" : " ---: |";
+    out += "\n";
+    for (const auto& row : table.rows) {
+        out += "|";
+        for (const auto& cell : row) {
+            const std::string text = markdown_text(cell.text);
+            out += ' ';
+            if (cell.bold && !text.empty())
+                out.append("**").append(text).append("**");
+            else
+                out += text;
+            out += " |";
+        }
+        out += "\n";
+    }
+    if (!table.caption.empty())
+        out += "\n" + table.caption + "\n";
+    return out;
+}
+
+std::string latex_escape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+        case '\\':
+            out += "\\textbackslash{}";
+            break;
+        case '&':
+        case '%':
+        case '$':
+        case '#':
+        case '_':
+        case '{':
+        case '}':
+            out += '\\';
+            out += c;
+            break;
+        case '~':
+            out += "\\textasciitilde{}";
+            break;
+        case '^':
+            out += "\\textasciicircum{}";
+            break;
+        case '<':
+            out += "\\textless{}";
+            break;
+        case '>':
+            out += "\\textgreater{}";
+            break;
+        case '|':
+            out += "\\textbar{}";
+            break;
+        default:
+            out += c;
+        }
+    }
+    return out;
+}
+
+std::string render_latex(const Table& table) {
+    std::string spec = "l";
+    for (std::size_t c = 1; c < table.header.size(); ++c)
+        spec += 'r';
+    std::string out = "% " + table.title + " (written by mhbench report)\n";
+    out += "\\begin{table}[htbp]\n\\centering\n\\small\n";
+    out += "\\caption{" + latex_escape(table.title) +
+           (table.caption.empty() ? "" : ". " + latex_escape(table.caption)) + "}\n";
+    out += "\\label{tab:" + table.id + "}\n";
+    out += "\\begin{tabular}{" + spec + "}\n\\toprule\n";
+    for (std::size_t c = 0; c < table.header.size(); ++c)
+        out.append(c == 0 ? "" : " & ").append(latex_escape(table.header[c]));
+    out += " \\\\\n\\midrule\n";
+    for (const auto& row : table.rows) {
+        for (std::size_t c = 0; c < row.size(); ++c) {
+            const std::string text = latex_escape(row[c].text);
+            out.append(c == 0 ? "" : " & ");
+            if (row[c].bold && !text.empty())
+                out.append("\\textbf{").append(text).append("}");
+            else
+                out += text;
+        }
+        out += " \\\\\n";
+    }
+    out += "\\bottomrule\n\\end{tabular}\n\\end{table}\n";
+    return out;
+}
+
+std::string render_csv(const Table& table) {
+    std::string out;
+    for (std::size_t c = 0; c < table.header.size(); ++c)
+        out.append(c == 0 ? "" : ",").append(csv_field(table.header[c]));
+    out += "\n";
+    for (const auto& row : table.rows) {
+        for (std::size_t c = 0; c < row.size(); ++c)
+            out.append(c == 0 ? "" : ",")
+                .append(csv_field(row[c].value.empty() ? row[c].text : row[c].value));
+        out += "\n";
+    }
+    return out;
+}
+
+std::string format_number(double value, int significant) {
+    if (std::isnan(value))
+        return "nan";
+    if (std::isinf(value))
+        return value > 0 ? "inf" : "-inf";
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*g", significant, value);
+    return buffer;
+}
+
+std::string format_fixed(double value, int decimals) {
+    if (!std::isfinite(value))
+        return format_number(value);
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    return buffer;
+}
+
+TableCell number_cell(double value, int significant) {
+    return {format_number(value, significant), csv_number(value), false};
+}
+
+TableCell text_cell(std::string text) {
+    return {std::move(text), "", false};
+}
+
+} // namespace mhb

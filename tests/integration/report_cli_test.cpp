@@ -1,0 +1,133 @@
+// `mhbench report` end to end through the executable: a finished study gives the tables on stdout
+// and exit 0; a damaged study or a bad option gives exactly one line on stderr naming the problem
+// and a non-zero exit (1 for bad data, 2 for a bad command line).
+#include "results/store.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace mhb {
+namespace {
+namespace fs = std::filesystem;
+
+// Removes the studies and output files this process made when it exits.
+struct TemporaryPaths {
+    std::vector<fs::path> paths;
+    ~TemporaryPaths() {
+        std::error_code ec;
+        for (const auto& p : paths)
+            fs::remove_all(p, ec);
+    }
+} temporary_paths;
+
+struct Outcome {
+    int exit_code = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path);
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+Outcome run_cli(const std::string& arguments) {
+    // The process id keeps tests that CTest runs in parallel (one process each) apart.
+    const std::string pid = std::to_string(::getpid());
+    const fs::path out = fs::temp_directory_path() / ("mhb_report_cli_stdout_" + pid + ".txt");
+    const fs::path err = fs::temp_directory_path() / ("mhb_report_cli_stderr_" + pid + ".txt");
+    temporary_paths.paths.push_back(out);
+    temporary_paths.paths.push_back(err);
+    const std::string command = std::string("'") + MHB_CLI_PATH + "' " + arguments + " >'" + out.string() +
+                                "' 2>'" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
+}
+
+fs::path small_study(const std::string& name) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("mhb_report_cli_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    temporary_paths.paths.push_back(dir);
+    StudyWriter writer(dir, "cli test\n", "threads=1\n", {"Rs", "Ld", "Lq", "psi"}, false);
+    std::int64_t id = 0;
+    for (const char* algorithm : {"itlbo", "pso"})
+        for (std::int64_t i = 0; i < 3; ++i, ++id) {
+            RunRecord r;
+            r.run_id = id;
+            r.algorithm = algorithm;
+            r.problem = "pmsm:load=2,speed=2500";
+            r.run_index = i;
+            r.best_f = 4.0 + static_cast<double>(id);
+            r.f_opt = 3.9;
+            r.evaluations = 100;
+            r.iterations = 1;
+            r.best_x = {0.33, 0.00324, 0.00324, 0.0776};
+            r.parameter_names = {"Rs", "Ld", "Lq", "psi"};
+            r.true_parameters = r.best_x;
+            r.x_opt = r.best_x;
+            r.curve = {{0, 50, r.best_f + 1.0, r.best_x}, {1, 100, r.best_f, r.best_x}};
+            r.checkpoints = {{1, r.best_f + 2.0}, {100, r.best_f}};
+            writer.append(r, 0.0);
+        }
+    writer.finish();
+    return dir;
+}
+
+std::size_t line_count(const std::string& text) {
+    std::size_t lines = 0;
+    for (char c : text)
+        lines += c == '\n' ? 1 : 0;
+    return lines;
+}
+
+TEST(ReportCli, WritesTheTablesAndPrintsThemInMarkdown) {
+    const fs::path dir = small_study("ok");
+    const Outcome o = run_cli("report '" + dir.string() + "' --no-figures");
+    EXPECT_EQ(o.exit_code, 0) << o.err;
+    EXPECT_NE(o.out.find("### Table 2: Fitness of different algorithms"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("| itlbo | 3/3 |"), std::string::npos) << o.out;
+    EXPECT_TRUE(fs::exists(dir / "report" / "table3_parameters.tex"));
+    EXPECT_TRUE(fs::exists(dir / "report" / "curves_iteration.csv"));
+}
+
+TEST(ReportCli, DamagedStudyGivesOneLineNamingTheFile) {
+    const fs::path dir = small_study("damaged");
+    fs::remove(dir / "trajectories.csv");
+    const Outcome o = run_cli("report '" + dir.string() + "' --no-figures");
+    EXPECT_EQ(o.exit_code, 1);
+    EXPECT_EQ(line_count(o.err), 1u) << o.err;
+    EXPECT_NE(o.err.find("trajectories.csv"), std::string::npos) << o.err;
+
+    const fs::path truncated = small_study("truncated");
+    const std::string runs = read_text(truncated / "runs.csv");
+    std::ofstream(truncated / "runs.csv", std::ios::trunc) << runs.substr(0, runs.size() - 7);
+    const Outcome t = run_cli("report '" + truncated.string() + "' --no-figures");
+    EXPECT_EQ(t.exit_code, 1);
+    EXPECT_EQ(line_count(t.err), 1u) << t.err;
+    EXPECT_NE(t.err.find("runs.csv"), std::string::npos) << t.err;
+}
+
+TEST(ReportCli, BadOptionsAreUsageErrors) {
+    const fs::path dir = small_study("options");
+    const Outcome alpha = run_cli("report '" + dir.string() + "' --alpha 0 --no-figures");
+    EXPECT_EQ(alpha.exit_code, 2);
+    EXPECT_NE(alpha.err.find("--alpha"), std::string::npos) << alpha.err;
+    const Outcome reference = run_cli("report '" + dir.string() + "' --reference cmaes --no-figures");
+    EXPECT_EQ(reference.exit_code, 2);
+    EXPECT_NE(reference.err.find("the study has: itlbo, pso"), std::string::npos) << reference.err;
+    EXPECT_EQ(run_cli("report").exit_code, 2);
+    const Outcome help = run_cli("report --help");
+    EXPECT_EQ(help.exit_code, 0);
+    EXPECT_NE(help.out.find("--reference"), std::string::npos);
+}
+
+} // namespace
+} // namespace mhb
