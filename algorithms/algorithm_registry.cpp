@@ -3,9 +3,10 @@
 namespace mhb {
 
 // One line per optimiser; each is defined in its own file.
+void register_random_search(AlgorithmRegistry& registry);
 
 void register_builtin_algorithms(AlgorithmRegistry& registry) {
-    (void)registry;
+    register_random_search(registry);
 }
 
 const AlgorithmRegistry& builtin_algorithms() {
