@@ -256,6 +256,8 @@ int run_run_command(const std::vector<std::string>& args) {
     const std::filesystem::path dir = vm.count("out") != 0 ? vm["out"].as<std::string>() : "studies/" + name;
     std::vector<std::string> command_line{"mhbench", "run"};
     command_line.insert(command_line.end(), args.begin(), args.end());
+    // From here on Ctrl-C means "stop after the runs under way"; before, it just ends the process.
+    const StopSignals signals;
     StudyWriter writer(dir, study_ini(prepared->study), context_ini(threads, command_line),
                        prepared->parameter_columns, vm["overwrite"].as<bool>());
 
@@ -272,11 +274,7 @@ int run_run_command(const std::vector<std::string>& args) {
         runner.on_run_finished = [&progress](std::int64_t kept, std::int64_t) { progress.update(kept); };
 
     const auto started = std::chrono::steady_clock::now();
-    RunnerOutcome outcome;
-    {
-        const StopSignals signals;
-        outcome = run_study(*prepared, writer, runner);
-    }
+    const RunnerOutcome outcome = run_study(*prepared, writer, runner);
     progress.finish();
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
 
