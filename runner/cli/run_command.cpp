@@ -88,7 +88,9 @@ po::options_description make_options() {
         ("problem", po::value<std::vector<std::string>>()->multitoken()->composing(), "same as --problems")
         ("runs", po::value<long long>(), "runs of each algorithm on each problem (default 20)")
         ("seed", po::value<std::string>(), "study seed, 0 to 2^64-1; every run's seed is derived from it (default 1)")
-        ("iterations", po::value<long long>(), "budget: iterations per run (iteration 0, the initialisation, is free)")
+        ("iterations", po::value<long long>(),
+         "budget: iterations per run after the initialisation (iteration 0). A study needs "
+         "--iterations or --evaluations; a preset brings its own")
         ("evaluations", po::value<long long>(),
          "budget: function evaluations per run; with --iterations, whichever is spent first ends the run. "
          "Either replaces both of a preset's budget values")

@@ -41,8 +41,10 @@ struct Result {
 // its exit code, stdout and stderr.
 Result shell(const std::string& command) {
     fs::create_directories(work);
-    const fs::path out = work / "stdout.txt";
-    const fs::path err = work / "stderr.txt";
+    // Named after the test, so that tests run in parallel (ctest -j) never share these files.
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const fs::path out = work / (test + ".stdout");
+    const fs::path err = work / (test + ".stderr");
     const std::string line = "(" + command + ") >" + out.string() + " 2>" + err.string();
     const int status = std::system(line.c_str());
     Result r;
