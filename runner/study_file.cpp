@@ -1,6 +1,7 @@
 #include "runner/study_file.hpp"
 
 #include "problems/parameters.hpp"
+#include "problems/spec.hpp"
 
 #include <charconv>
 #include <fstream>
@@ -72,10 +73,11 @@ Study parse_study_ini(std::string_view text, const std::string& origin) {
             out = v;
             seen = true;
         };
-        if (key == "algorithm") {
-            study.algorithms.push_back(value);
-        } else if (key == "problem") {
-            study.problems.push_back(value);
+        if (key == "algorithm" || key == "problem") {
+            // Several specs may share a line, separated by spaces, as on the command line.
+            auto& list = key == "algorithm" ? study.algorithms : study.problems;
+            for (auto& spec : split_spec_list(value))
+                list.push_back(std::move(spec));
         } else if (key == "runs") {
             read_integer(study.runs, seen_runs);
         } else if (key == "seed") {

@@ -2,7 +2,8 @@
 // The syntax is Boost.Program_options' config-file syntax (`key = value`, `#` comments), with the
 // keys of `mhbench run`'s options:
 //
-//   algorithm = pso:w=0.7        one line per algorithm, in order
+//   algorithm = pso:w=0.7        one line per algorithm, in order (a line may hold several,
+//                                separated by spaces, as on the command line)
 //   problem = sphere:dim=10      one line per problem spec, in order (ranges kept as written)
 //   runs = 20
 //   seed = 1

@@ -185,13 +185,6 @@ void apply_options(const po::variables_map& vm, Study& study, std::vector<std::s
         study.budget.target_error = vm["target"].as<double>();
 }
 
-void print_lines(const std::string& text) {
-    std::istringstream in(text);
-    std::string line;
-    while (std::getline(in, line))
-        std::cerr << "mhbench run: " << line << '\n';
-}
-
 void print_summary(const std::filesystem::path& dir, const RunnerOutcome& outcome, double wall_seconds) {
     const StudyData data = load_study(dir);
     std::int64_t failed = 0;
@@ -247,10 +240,8 @@ int run_run_command(const std::vector<std::string>& args) {
         }
     }
     if (!errors.empty()) {
-        std::string all;
         for (const auto& e : errors)
-            all += e + '\n';
-        print_lines(all);
+            std::cerr << "mhbench run: " << e << '\n';
         return exit_usage;
     }
 

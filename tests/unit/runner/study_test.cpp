@@ -207,9 +207,9 @@ TEST(StudyFile, RoundTripsTheSameStudy) {
 TEST(StudyFile, ReadsConfigSyntaxWithCommentsAndNamesTheLineOfAnError) {
     const Study s =
         parse_study_ini("# a comment\n\n  algorithm = random-search:batch=3   # trailing comment\r\n"
-                        "problem=sphere\nruns = 1e1\niterations = 7\n",
+                        "problem=sphere\nruns = 1e1\niterations = 7\nalgorithm = a  b:c=1\n",
                         "f.ini");
-    EXPECT_EQ(s.algorithms, (std::vector<std::string>{"random-search:batch=3"}));
+    EXPECT_EQ(s.algorithms, (std::vector<std::string>{"random-search:batch=3", "a", "b:c=1"}));
     EXPECT_EQ(s.problems, (std::vector<std::string>{"sphere"}));
     EXPECT_EQ(s.runs, 10);
     EXPECT_EQ(s.budget.max_iterations, 7);
