@@ -6,11 +6,13 @@ namespace mhb {
 void register_itlbo(AlgorithmRegistry& registry);
 void register_tlbo(AlgorithmRegistry& registry);
 void register_pso(AlgorithmRegistry& registry);
+void register_random_search(AlgorithmRegistry& registry);
 
 void register_builtin_algorithms(AlgorithmRegistry& registry) {
     register_itlbo(registry);
     register_tlbo(registry);
     register_pso(registry);
+    register_random_search(registry);
 }
 
 const AlgorithmRegistry& builtin_algorithms() {

@@ -14,12 +14,16 @@
 namespace mhb::cli {
 
 // One line per subcommand; each is defined in its own file.
+int run_run_command(const std::vector<std::string>& args);
+int run_list_command(const std::vector<std::string>& args);
 int run_report_command(const std::vector<std::string>& args);
 
 namespace {
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> table = {
+        {"run", "run a study (algorithms x problems x runs) in parallel into a directory", run_run_command},
+        {"list", "list algorithms, problems and study presets with their parameters", run_list_command},
         {"report", "tables, statistics, curve data and figures of a finished study", run_report_command},
     };
     return table;

@@ -1,0 +1,57 @@
+// Pure random search: independent uniform samples in the box, the best one kept (Brooks 1958,
+// "A discussion of random methods for seeking maxima"; Rastrigin 1963, "The convergence of the
+// random search method in the extremal control of a many parameter system").
+// It learns nothing from what it has seen, so it is the floor every optimiser must clear: an
+// algorithm that does not beat it on a problem has not shown it can exploit that problem.
+//
+// Parameters: batch = evaluations per iteration (default 50, the paper's population size, so
+// that at equal iterations random search spends what PSO spends).
+// Evaluations: batch for the initialisation (iteration 0), then batch per iteration.
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/sampling.hpp"
+
+namespace mhb {
+namespace {
+
+class RandomSearch final : public Optimizer {
+public:
+    explicit RandomSearch(long long batch) : batch_(batch) {}
+
+    std::string name() const override { return "random-search"; }
+
+    void run(Objective& objective, Rng& rng) const override {
+        sample_batch(objective, rng);
+        objective.initialised();
+        while (!objective.exhausted()) {
+            sample_batch(objective, rng);
+            objective.end_iteration();
+        }
+    }
+
+private:
+    // The Objective keeps the best point, so a sample needs nothing else done with it.
+    void sample_batch(Objective& objective, Rng& rng) const {
+        for (long long i = 0; i < batch_; ++i) {
+            Eigen::VectorXd x = uniform_point(objective.bounds(), rng);
+            objective.evaluate(x);
+        }
+    }
+
+    long long batch_;
+};
+
+} // namespace
+
+void register_random_search(AlgorithmRegistry& registry) {
+    registry.add(
+        {"random-search",
+         "pure random search: uniform samples in the box, the best kept; the baseline to beat",
+         "Brooks (1958), Oper. Res. 6(2); Rastrigin (1963), Autom. Remote Control 24",
+         {ParameterInfo::integer("batch", 50, 1, 1000000000,
+                                 "evaluations per iteration (default 50 = the paper's population size)")},
+         [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
+             return std::make_unique<RandomSearch>(p.integer("batch"));
+         }});
+}
+
+} // namespace mhb

@@ -1,0 +1,115 @@
+// `mhbench list [algorithms|problems|studies]`: what can be named in a study, with each entry's
+// summary, reference and parameters (default, allowed values, meaning). Printed straight from
+// the registries' declarations, so it can never disagree with what the code accepts.
+#include "algorithms/algorithm_registry.hpp"
+#include "problems/problem_registry.hpp"
+#include "runner/cli/command.hpp"
+#include "runner/study_presets.hpp"
+
+#include <algorithm>
+#include <boost/program_options.hpp>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace mhb::cli {
+namespace po = boost::program_options;
+
+namespace {
+
+template <class Product>
+void print_registry(std::ostream& out, const char* title, const Registry<Product>& registry) {
+    out << title << " (" << registry.entries().size() << ")\n";
+    for (const auto& entry : registry.entries()) {
+        out << '\n' << "  " << entry.name << "\n      " << entry.summary << '\n';
+        if (!entry.reference.empty())
+            out << "      reference: " << entry.reference << '\n';
+        if (entry.parameters.empty()) {
+            out << "      no parameters\n";
+            continue;
+        }
+        // Columns sized to this entry's parameters, so each table reads straight down.
+        std::size_t name_width = 9; // "parameter"
+        std::size_t default_width = 7;
+        std::size_t allowed_width = 7;
+        for (const auto& p : entry.parameters) {
+            name_width = std::max(name_width, p.name.size());
+            default_width = std::max(default_width, p.default_value.empty() ? 6 : p.default_value.size());
+            allowed_width = std::max(allowed_width, p.allowed().size() + (p.allows_range ? 9 : 0));
+        }
+        const auto row = [&](const std::string& a, const std::string& b, const std::string& c,
+                             const std::string& d) {
+            out << "      " << a << std::string(name_width - a.size() + 2, ' ') << b
+                << std::string(default_width - b.size() + 2, ' ') << c
+                << std::string(allowed_width - c.size() + 2, ' ') << d << '\n';
+        };
+        row("parameter", "default", "allowed", "meaning");
+        for (const auto& p : entry.parameters)
+            row(p.name, p.default_value.empty() ? "(none)" : p.default_value,
+                p.allowed() + (p.allows_range ? " or a-b" : ""), p.help);
+    }
+    out << "\nWrite a component as name:key=value,... e.g. "
+        << (registry.entries().empty()
+                ? std::string("name:key=value")
+                : registry.entries().front().name +
+                      (registry.entries().front().parameters.empty()
+                           ? std::string()
+                           : ":" + registry.entries().front().parameters.front().name + "=" +
+                                 registry.entries().front().parameters.front().default_value))
+        << "\n\n";
+}
+
+void print_studies(std::ostream& out) {
+    out << "Study presets (" << study_presets().size() << "), for mhbench run --study NAME\n\n";
+    for (const auto& p : study_presets()) {
+        out << "  " << p.name << "\n      " << p.summary << "\n      algorithms:";
+        for (const auto& a : p.study.algorithms)
+            out << ' ' << a;
+        out << "\n      problems:";
+        for (const auto& q : p.study.problems)
+            out << ' ' << q;
+        out << "\n      runs: " << p.study.runs;
+        if (p.study.budget.max_iterations)
+            out << ", iterations: " << *p.study.budget.max_iterations;
+        if (p.study.budget.max_evaluations)
+            out << ", evaluations: " << *p.study.budget.max_evaluations;
+        out << "\n\n";
+    }
+}
+
+} // namespace
+
+int run_list_command(const std::vector<std::string>& args) {
+    po::options_description options("Options");
+    options.add_options()("help,h", "this text")("what", po::value<std::string>(),
+                                                 "algorithms, problems or studies (default: all three)");
+    po::positional_options_description positional;
+    positional.add("what", 1);
+    po::variables_map vm;
+    po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
+    po::notify(vm);
+    if (vm.count("help") != 0) {
+        std::cout << "Usage: mhbench list [algorithms|problems|studies]\n\n"
+                     "Lists what a study can name: every registered optimiser and problem family with its\n"
+                     "summary, reference and parameters (default, allowed values, meaning), and the study\n"
+                     "presets of mhbench run --study.\n\n"
+                  << options << "\nExamples:\n  mhbench list\n  mhbench list algorithms\n";
+        return exit_ok;
+    }
+    const std::string what = vm.count("what") != 0 ? vm["what"].as<std::string>() : "all";
+    const bool all = what == "all";
+    if (!all && what != "algorithms" && what != "problems" && what != "studies") {
+        std::cerr << "mhbench list: unknown list '" << what << "'; known: algorithms, problems, studies\n";
+        return exit_usage;
+    }
+    if (all || what == "algorithms")
+        print_registry(std::cout, "Algorithms", builtin_algorithms());
+    if (all || what == "problems")
+        print_registry(std::cout, "Problems", builtin_problems());
+    if (all || what == "studies")
+        print_studies(std::cout);
+    return exit_ok;
+}
+
+} // namespace mhb::cli

@@ -1,0 +1,15 @@
+// context.ini: where and how a study was run (mhbench version, git commit, compiler, build
+// type, threads, hardware threads, date and time UTC, host name, command line). Unlike study.ini
+// it differs from machine to machine and is rewritten by every session of a resumed study; it
+// never influences results.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace mhb {
+
+// `command_line` is argv as given (quoted here when an argument holds spaces).
+std::string context_ini(int threads, const std::vector<std::string>& command_line);
+
+} // namespace mhb

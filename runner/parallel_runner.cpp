@@ -1,0 +1,73 @@
+#include "runner/parallel_runner.hpp"
+
+#include "runner/execute_run.hpp"
+
+#include <chrono>
+#include <mutex>
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/info.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/partitioner.h>
+#include <stdexcept>
+#include <vector>
+
+namespace mhb {
+
+int resolve_thread_count(int threads) {
+    if (threads < 0)
+        throw std::invalid_argument("threads = " + std::to_string(threads) + " is outside [0, inf)");
+    return threads == 0 ? tbb::info::default_concurrency() : threads;
+}
+
+RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const RunnerOptions& options) {
+    RunnerOutcome outcome;
+    outcome.total = study.run_count();
+    // Ids in the journal that are not runs of this study would mean the writer was opened for
+    // another study; StudyWriter compares study.ini first, so this is a misuse.
+    for (const std::int64_t id : writer.completed())
+        if (id < 0 || id >= outcome.total)
+            throw std::logic_error("run_study: the journal holds run " + std::to_string(id) +
+                                   ", which is not a run of this study");
+    outcome.resumed = static_cast<std::int64_t>(writer.completed().size());
+
+    std::vector<std::int64_t> pending;
+    pending.reserve(static_cast<std::size_t>(outcome.total - outcome.resumed));
+    for (std::int64_t id = 0; id < outcome.total; ++id)
+        if (writer.completed().count(id) == 0)
+            pending.push_back(id);
+
+    const auto stopping = [&] { return options.stop != nullptr && options.stop->load(); };
+    std::mutex progress_mutex;
+    std::int64_t kept = outcome.resumed;
+    {
+        const tbb::global_control cap(tbb::global_control::max_allowed_parallelism,
+                                      static_cast<std::size_t>(resolve_thread_count(options.threads)));
+        // Grain 1 with the simple partitioner: one task per run, so a slow run never holds
+        // back a chunk of others, and a stop request is seen before each run starts.
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, pending.size(), 1),
+            [&](const tbb::blocked_range<std::size_t>& range) {
+                for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                    if (stopping())
+                        return;
+                    const auto started = std::chrono::steady_clock::now();
+                    const RunRecord record = execute_run(study.request(pending[i]));
+                    const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
+                    writer.append(record, wall.count());
+                    const std::lock_guard<std::mutex> lock(progress_mutex);
+                    ++kept;
+                    if (options.on_run_finished)
+                        options.on_run_finished(kept, outcome.total);
+                }
+            },
+            tbb::simple_partitioner());
+    }
+    outcome.kept = kept;
+    outcome.interrupted = kept < outcome.total;
+    if (!outcome.interrupted)
+        writer.finish();
+    return outcome;
+}
+
+} // namespace mhb

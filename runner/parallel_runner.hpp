@@ -1,0 +1,43 @@
+// Runs a prepared study on oneTBB: one task per run (parallel_for, grain 1), the thread count
+// capped by tbb::global_control. Each finished run is journaled by the StudyWriter at once, so
+// an interruption loses nothing; runs already in the journal are skipped (resume). Results do
+// not depend on the thread count: seeds come from derive_seed (via execute_run) and the store
+// sorts by run id.
+//
+// Cancellation: once `*stop` becomes true, no new run starts; runs under way finish and are
+// journaled. The CLI sets it from SIGINT/SIGTERM; tests set it from on_run_finished.
+#pragma once
+
+#include "results/store.hpp"
+#include "runner/study.hpp"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+namespace mhb {
+
+struct RunnerOptions {
+    int threads = 0;                         // 0: every hardware thread
+    const std::atomic<bool>* stop = nullptr; // may be set from a signal handler
+    // Called after each run is journaled, with the runs now kept and the study's total.
+    // Calls are serialised (never two at once), but may come from any worker thread.
+    std::function<void(std::int64_t kept, std::int64_t total)> on_run_finished;
+};
+
+struct RunnerOutcome {
+    std::int64_t total = 0;   // runs in the study
+    std::int64_t resumed = 0; // found already finished in the journal
+    std::int64_t kept = 0;    // finished and journaled, resumed ones included
+    bool interrupted = false; // stopped before all runs were done (the study is not finished)
+};
+
+// Runs every run of `study` not yet in `writer`'s journal. When all are done, finishes the
+// writer (sorted files, runs.csv last); when stopped early, leaves the journal for a resume.
+// A run that throws becomes a failed record; an I/O error of the writer propagates.
+RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const RunnerOptions& options = {});
+
+// The thread count `threads` = 0 stands for (oneTBB's default concurrency).
+int resolve_thread_count(int threads);
+
+} // namespace mhb

@@ -1,0 +1,266 @@
+// `mhbench run` and `mhbench list` end to end, through the real binary (MHB_CLI_PATH): results
+// byte-identical for 1 and 2 threads and when re-run from study.ini; every bad input gives one
+// line per error, a non-zero exit and no runs.csv; Ctrl-C keeps finished runs and resumes.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <vector>
+
+namespace {
+namespace fs = std::filesystem;
+
+const fs::path work = fs::temp_directory_path() / "mhb_cli_run_test";
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        out.push_back(line);
+    return out;
+}
+
+struct Result {
+    int exit_code = -1;
+    std::string out;
+    std::string err;
+};
+
+// Runs a shell command line (the binary is substituted for "mhbench" at its start) and collects
+// its exit code, stdout and stderr.
+Result shell(const std::string& command) {
+    fs::create_directories(work);
+    // Named after the test, so that tests run in parallel (ctest -j) never share these files.
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const fs::path out = work / (test + ".stdout");
+    const fs::path err = work / (test + ".stderr");
+    const std::string line = "(" + command + ") >" + out.string() + " 2>" + err.string();
+    const int status = std::system(line.c_str());
+    Result r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = read_text(out);
+    r.err = read_text(err);
+    return r;
+}
+
+Result mhbench(const std::string& args) {
+    return shell(std::string("'") + MHB_CLI_PATH + "' " + args);
+}
+
+fs::path fresh(const std::string& name) {
+    const fs::path dir = work / name;
+    fs::remove_all(dir);
+    return dir;
+}
+
+const std::string small_study =
+    "--algorithms \"random-search random-search:batch=20\" --problems sphere:dim=3 "
+    "--problem sphere:dim=5,bound=2 --runs 4 --iterations 30 --evaluations 500 --seed 9";
+
+const char* const deterministic_files[] = {"runs.csv", "curves.csv", "checkpoints.csv", "trajectories.csv",
+                                           "study.ini"};
+
+TEST(CliRun, OneAndTwoThreadsGiveByteIdenticalResults) {
+    const fs::path one = fresh("threads1");
+    const fs::path two = fresh("threads2");
+    const Result a = mhbench("run " + small_study + " --threads 1 --out " + one.string());
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    const Result b = mhbench("run " + small_study + " --threads 2 --out " + two.string());
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    for (const char* name : deterministic_files)
+        EXPECT_EQ(read_text(one / name), read_text(two / name)) << name;
+    // 2 problems x 2 algorithms x 4 runs, numbered from 0, plus the header.
+    EXPECT_EQ(lines_of(read_text(one / "runs.csv")).size(), 17u);
+    EXPECT_NE(read_text(one / "context.ini").find("threads = 1\n"), std::string::npos);
+    EXPECT_NE(read_text(two / "context.ini").find("threads = 2\n"), std::string::npos);
+    // The summary: runs, failures, evaluations, wall time and the directory. The budget is exact:
+    // batch 50 stops at 500 evaluations (before 30 iterations), batch 20 at 20 + 30 * 20 = 620 > 500
+    // also at 500, so 16 runs x 500.
+    EXPECT_NE(a.out.find("study finished: 16 runs (0 failed), 8000 evaluations"), std::string::npos) << a.out;
+    EXPECT_NE(a.out.find("results in " + one.string()), std::string::npos) << a.out;
+    EXPECT_EQ(a.err, ""); // no progress bar when stderr is not a terminal
+}
+
+TEST(CliRun, StudyFileRunsTheSameStudyAgain) {
+    const fs::path first = fresh("original");
+    const fs::path again = fresh("from_file");
+    ASSERT_EQ(mhbench("run " + small_study + " --threads 2 --quiet --out " + first.string()).exit_code, 0);
+    const Result r = mhbench("run --study-file " + (first / "study.ini").string() +
+                             " --threads 1 --quiet --out " + again.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.out, ""); // --quiet
+    for (const char* name : deterministic_files)
+        EXPECT_EQ(read_text(first / name), read_text(again / name)) << name;
+    // Options override the file: another seed gives another study with other results.
+    const fs::path other = fresh("other_seed");
+    ASSERT_EQ(mhbench("run --study-file " + (first / "study.ini").string() + " --seed 10 --quiet --out " +
+                      other.string())
+                  .exit_code,
+              0);
+    EXPECT_NE(read_text(first / "runs.csv"), read_text(other / "runs.csv"));
+}
+
+TEST(CliRun, PresetsRunAndOptionsOverrideThem) {
+    const fs::path dir = fresh("smoke");
+    const Result r = mhbench("run --study smoke --runs 3 --evaluations 200 --quiet --out " + dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string ini = read_text(dir / "study.ini");
+    EXPECT_NE(ini.find("algorithm = random-search\nproblem = sphere:dim=5\nruns = 3\n"), std::string::npos)
+        << ini;
+    // --evaluations replaces the preset's whole budget (its 100 iterations are dropped).
+    EXPECT_NE(ini.find("evaluations = 200\n"), std::string::npos);
+    EXPECT_EQ(ini.find("iterations"), std::string::npos);
+}
+
+// Each case: the arguments, and the error lines expected on stderr (exactly, in order).
+struct BadInput {
+    std::string args;
+    std::vector<std::string> errors;
+};
+
+TEST(CliRun, BadInputGivesOneLinePerErrorNonZeroExitAndNoRunsCsv) {
+    fs::create_directories(work);
+    std::ofstream(work / "a_file") << "not a directory\n";
+    const std::vector<BadInput> cases = {
+        {"--algorithms nope --problems sphere --iterations 5",
+         {"mhbench run: unknown algorithm 'nope'; known: random-search"}},
+        {"--algorithms random-search --problems nope --iterations 5",
+         {"mhbench run: unknown problem 'nope'; known: sphere"}},
+        {"--algorithms random-search:batch=0 --problems sphere --iterations 5",
+         {"mhbench run: random-search: parameter 'batch' = 0 is outside [1, 1e+09]"}},
+        {"--algorithms random-search --problems sphere:dim=0 --runs 0 --iterations 5 --threads 0",
+         {"mhbench run: threads = 0 is outside [1, inf)",
+          "mhbench run: sphere: parameter 'dim' = 0 is outside [1, 10000]",
+          "mhbench run: study: runs = 0 is outside [1, 1000000]"}},
+        {"--algorithms random-search --problems sphere",
+         {"mhbench run: budget: give a number of iterations or of evaluations (or both)"}},
+        {"--study nope", {"mhbench run: unknown study 'nope'; known: paper, smoke"}},
+        {"--algorithms random-search --problems sphere --iterations 5 --out " +
+             (work / "a_file" / "sub").string(),
+         {"mhbench run: " + (work / "a_file" / "sub").string() +
+          ": cannot create the output directory (Not a directory)"}},
+        {"--algorithms random-search --problems sphere --iterations 5 --bogus",
+         {"mhbench run: unrecognised option '--bogus' (see mhbench run --help)"}},
+    };
+    for (const auto& c : cases) {
+        const fs::path dir = fresh("bad");
+        const bool has_out = c.args.find("--out") != std::string::npos;
+        const Result r = mhbench("run " + c.args + (has_out ? "" : " --out " + dir.string()));
+        EXPECT_NE(r.exit_code, 0) << c.args;
+        EXPECT_EQ(lines_of(r.err), c.errors) << c.args;
+        EXPECT_FALSE(fs::exists(dir / "runs.csv")) << c.args;
+        EXPECT_FALSE(fs::exists(dir)) << c.args; // validation comes before anything is written
+    }
+}
+
+TEST(CliRun, AFinishedStudyIsKeptUnlessOverwriteIsGiven) {
+    const fs::path dir = fresh("finished");
+    const std::string args =
+        "run --algorithms random-search --problems sphere:dim=2 --runs 2 --iterations 3 --out " +
+        dir.string();
+    ASSERT_EQ(mhbench(args).exit_code, 0);
+    const std::string runs = read_text(dir / "runs.csv");
+    const Result again = mhbench(args + " --seed 5");
+    EXPECT_NE(again.exit_code, 0);
+    EXPECT_EQ(lines_of(again.err),
+              std::vector<std::string>{"mhbench run: " + dir.string() +
+                                       ": holds a finished study; choose another --out or pass --overwrite"});
+    EXPECT_EQ(read_text(dir / "runs.csv"), runs); // untouched
+    ASSERT_EQ(mhbench(args + " --seed 5 --overwrite").exit_code, 0);
+    EXPECT_NE(read_text(dir / "runs.csv"), runs);
+    EXPECT_NE(read_text(dir / "study.ini").find("seed = 5\n"), std::string::npos);
+}
+
+TEST(CliRun, InterruptKeepsFinishedRunsAndTheSameCommandResumes) {
+    const fs::path dir = fresh("interrupted");
+    // Far more work than the test waits for (1000 runs of about 20 ms).
+    const std::string command =
+        std::string("'") + MHB_CLI_PATH +
+        "' run --algorithms random-search:batch=1000 --problems sphere:dim=5 --runs 1000 "
+        "--evaluations 200000 --threads 1 --out " +
+        dir.string();
+    // SIGINT as soon as the journal grows, i.e. once this session has journaled a run.
+    const std::string journal = (dir / "journal.txt").string();
+    const std::string interrupt = "s0=$(cat " + journal + " 2>/dev/null | wc -c); " + command +
+                                  " & pid=$!; i=0; while [ \"$(cat " + journal +
+                                  " 2>/dev/null | wc -c)\" -le \"$s0\" ] && [ $i -lt 600 ]; do sleep 0.05; "
+                                  "i=$((i+1)); done; kill -INT $pid; wait $pid";
+    const auto kept_of = [](const std::string& err) {
+        // "interrupted: K of 1000 runs kept in DIR; run the same command again to resume"
+        return std::stoll(err.substr(err.find(':') + 2));
+    };
+    const Result first = shell(interrupt);
+    EXPECT_EQ(first.exit_code, 130) << first.err;
+    EXPECT_EQ(lines_of(first.err),
+              std::vector<std::string>{"interrupted: " + std::to_string(kept_of(first.err)) +
+                                       " of 1000 runs kept in " + dir.string() +
+                                       "; run the same command again to resume"});
+    EXPECT_GE(kept_of(first.err), 1);
+    EXPECT_FALSE(fs::exists(dir / "runs.csv"));
+    EXPECT_TRUE(fs::exists(dir / "journal.txt"));
+
+    // The same command again picks up where it stopped: the count only grows.
+    const Result second = shell(interrupt);
+    EXPECT_EQ(second.exit_code, 130) << second.err;
+    EXPECT_GE(kept_of(second.err), kept_of(first.err) + 1);
+    EXPECT_FALSE(fs::exists(dir / "runs.csv"));
+    fs::remove_all(dir); // 1000-run journals are not worth keeping in /tmp
+}
+
+TEST(CliList, ListsRandomSearchWithItsParameter) {
+    const Result r = mhbench("list algorithms");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("random-search"), std::string::npos);
+    EXPECT_NE(r.out.find("Brooks (1958)"), std::string::npos);
+    // The parameter row: name, default, allowed range, meaning.
+    bool found = false;
+    for (const auto& line : lines_of(r.out))
+        if (line.find("batch") != std::string::npos && line.find("50") != std::string::npos &&
+            line.find("[1, 1e+09]") != std::string::npos &&
+            line.find("evaluations per iteration") != std::string::npos)
+            found = true;
+    EXPECT_TRUE(found) << r.out;
+    EXPECT_EQ(r.out.find("Problems"), std::string::npos); // only what was asked for
+
+    const Result all = mhbench("list");
+    ASSERT_EQ(all.exit_code, 0);
+    for (const char* word : {"Algorithms", "Problems", "sphere", "Study presets", "paper", "smoke"})
+        EXPECT_NE(all.out.find(word), std::string::npos) << word;
+
+    const Result bad = mhbench("list nothing");
+    EXPECT_NE(bad.exit_code, 0);
+    EXPECT_EQ(lines_of(bad.err),
+              std::vector<std::string>{
+                  "mhbench list: unknown list 'nothing'; known: algorithms, problems, studies"});
+}
+
+TEST(CliHelp, EveryCommandExplainsItself) {
+    const Result top = mhbench("--help");
+    EXPECT_EQ(top.exit_code, 0);
+    EXPECT_NE(top.out.find("run "), std::string::npos);
+    EXPECT_NE(top.out.find("list "), std::string::npos);
+
+    const Result run = mhbench("run --help");
+    EXPECT_EQ(run.exit_code, 0);
+    for (const char* option : {"--algorithms", "--problems", "--runs", "--seed", "--threads", "--iterations",
+                               "--evaluations", "--target", "--out", "--overwrite", "--study", "--study-file",
+                               "--progress", "--quiet", "default 20", "Examples:", "paper"})
+        EXPECT_NE(run.out.find(option), std::string::npos) << option;
+
+    const Result list = mhbench("list --help");
+    EXPECT_EQ(list.exit_code, 0);
+    EXPECT_NE(list.out.find("mhbench list [algorithms|problems|studies]"), std::string::npos);
+}
+
+} // namespace
