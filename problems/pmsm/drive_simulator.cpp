@@ -115,7 +115,8 @@ public:
 
     // One control period k: measure, control, apply over [t_k, t_k + Ts), and return the logged row.
     void step(int k, Dataset& log) {
-        const double t = k * cfg_.Ts;
+        // k / (1 / Ts) rather than k * Ts: 0.3202, not 0.32020000000000004, in the written file.
+        const double t = static_cast<double>(k) / (1.0 / cfg_.Ts);
         double id_m = x_.id;
         double iq_m = x_.iq;
         if (cfg_.noise_i > 0) {
