@@ -14,11 +14,15 @@
 namespace mhb::cli {
 
 // One line per subcommand; each is defined in its own file.
+int run_simulate_command(const std::vector<std::string>& args);
+int run_identify_command(const std::vector<std::string>& args);
 
 namespace {
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> table = {
+        {"simulate", "simulate the paper's drive and write a dataset CSV", run_simulate_command},
+        {"identify", "least-squares Rs, Ld, Lq, psi with standard errors from a dataset CSV", run_identify_command},
     };
     return table;
 }
