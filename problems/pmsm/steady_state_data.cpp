@@ -40,4 +40,21 @@ SteadyStateData pair_samples(const Dataset& data, const FitnessWeights& weights)
     return s;
 }
 
+WeightedSystem weighted_system(const SteadyStateData& s) {
+    const Eigen::Index m = s.ud.size();
+    WeightedSystem sys{Eigen::MatrixXd::Zero(2 * m, 4), Eigen::VectorXd(2 * m)};
+    const Eigen::ArrayXd sd = s.weight_d.sqrt();
+    const Eigen::ArrayXd sq = s.weight_q.sqrt();
+    // r_d = ud - (Rs id - Lq omega iq)
+    sys.A.col(0).head(m) = (sd * s.id).matrix();
+    sys.A.col(2).head(m) = (-sd * s.omega_iq).matrix();
+    sys.b.head(m) = (sd * s.ud).matrix();
+    // r_q = uq - (Rs iq + Ld omega id + psi omega)
+    sys.A.col(0).tail(m) = (sq * s.iq).matrix();
+    sys.A.col(1).tail(m) = (sq * s.omega_id).matrix();
+    sys.A.col(3).tail(m) = (sq * s.omega).matrix();
+    sys.b.tail(m) = (sq * s.uq).matrix();
+    return sys;
+}
+
 } // namespace mhb::pmsm

@@ -31,6 +31,14 @@ struct SteadyStateData {
     }
 };
 
+// Eq. 11 as a stacked linear system: f(theta) = |b - A theta|^2 with the square roots of the
+// weights folded into A and b; the d-axis rows of all 2n samples, then the q-axis rows.
+struct WeightedSystem {
+    Eigen::MatrixXd A; // 4n x 4
+    Eigen::VectorXd b; // 4n
+};
+WeightedSystem weighted_system(const SteadyStateData& data);
+
 // Pairs the samples of `data`. Throws std::invalid_argument if a state has no sample or a
 // weight is negative or not finite.
 SteadyStateData pair_samples(const Dataset& data, const FitnessWeights& weights = {});
