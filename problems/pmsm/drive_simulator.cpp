@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "problems/parameters.hpp"
 #include "problems/rng.hpp"
@@ -99,6 +100,7 @@ public:
         int_q_ = m_.Rs * iq0;
         u_prev_d_ = -omega_ref_ * m_.Lq * iq0;
         u_prev_q_ = m_.Rs * iq0 + omega_ref_ * m_.psi;
+        angle_prev_ = -omega_ref_ * cfg_.Ts; // that command was set one period before t = 0
         umax_ = cfg_.vdc / std::sqrt(3.0);
         dead_voltage_ = cfg_.vdc * cfg_.dead_time / cfg_.Ts;
     }
@@ -164,9 +166,11 @@ public:
 
         double apply_d = ud;
         double apply_q = uq;
+        hold_angle_ = x_.theta; // the angle the controller's inverse Park transform uses
         if (cfg_.delay_periods == 1) {
             apply_d = u_prev_d_;
             apply_q = u_prev_q_;
+            std::swap(hold_angle_, angle_prev_);
             u_prev_d_ = ud;
             u_prev_q_ = uq;
         }
@@ -195,6 +199,16 @@ private:
     }
 
     [[nodiscard]] PlantState derivative(const PlantState& s, double ud, double uq) const {
+        if (cfg_.stator_frame_hold) {
+            // The inverter holds the stator-frame vector set with the angle at the start of the
+            // period; seen from the rotor it turns back by the angle travelled since.
+            const double lag = s.theta - hold_angle_;
+            const double co = std::cos(lag);
+            const double si = std::sin(lag);
+            const double d_axis = co * ud + si * uq;
+            uq = -si * ud + co * uq;
+            ud = d_axis;
+        }
         PlantState d;
         d.id = (ud - m_.Rs * s.id + s.omega * m_.Lq * s.iq) / m_.Ld;
         d.iq = (uq - m_.Rs * s.iq - s.omega * m_.Ld * s.id - s.omega * m_.psi) / m_.Lq;
@@ -237,6 +251,8 @@ private:
     double dead_voltage_ = 0;
     double int_w_ = 0, int_d_ = 0, int_q_ = 0;
     double u_prev_d_ = 0, u_prev_q_ = 0;
+    double hold_angle_ = 0; // rotor angle with which the applied voltage was set
+    double angle_prev_ = 0; // with the delay: the angle of the command waiting for the next period
 };
 
 } // namespace
@@ -293,7 +309,7 @@ Dataset simulate_dataset(const SimulatorConfig& config) {
     out.set_metadata("Ts", config.Ts);
     out.set_metadata("dt_plant", config.Ts / config.substeps);
     out.set_metadata("integrator", std::string("RK4"));
-    out.set_metadata("zoh_frame", std::string("dq"));
+    out.set_metadata("zoh_frame", std::string(config.stator_frame_hold ? "stator" : "dq"));
     out.set_metadata("noise_i", config.noise_i);
     out.set_metadata("noise_u", config.noise_u);
     out.set_metadata("adc_bits", static_cast<double>(config.adc_bits));

@@ -22,8 +22,12 @@
 // Imperfections, each off by default: Gaussian noise on the measured currents (inside the loop,
 // the controller sees it) and on the logged voltages (the motor receives the commanded voltage),
 // a 12-bit-style ADC quantisation of the phase currents, inverter dead time (a per-phase voltage
-// error -Vdc * t_dead / Ts * sign(i)), and a one-period computation delay. All randomness comes
-// from `seed` through mhb::Rng (current and voltage noise on separate streams).
+// error -Vdc * t_dead / Ts * sign(i)), a one-period computation delay, and a stator-frame hold.
+// With the default dq-frame hold a delay changes only the transients (a constant steady voltage
+// is the same one period later); with the stator-frame hold the voltage vector lags the rotor by
+// omega t within each period (by omega Ts / 2 on average, 1.5 omega Ts with the delay), the
+// angle error a real inverter has unless the inverse Park transform is compensated. All
+// randomness comes from `seed` through mhb::Rng (current and voltage noise on separate streams).
 #pragma once
 
 #include <cstdint>
@@ -61,6 +65,8 @@ struct SimulatorConfig {
     double adc_range = 20.0;           // A, the ADC spans [-range, range]
     double dead_time = 0.0;            // s; 0: ideal inverter
     int delay_periods = 0;             // 0 or 1: the motor receives the previous period's voltage
+    bool stator_frame_hold = false;    // hold the voltage in the stator frame (a real inverter, no
+                                       // angle compensation) instead of the rotor dq frame
 
     // Throws std::invalid_argument naming the first bad field.
     void validate() const;

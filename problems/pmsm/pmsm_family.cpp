@@ -41,7 +41,7 @@ std::unique_ptr<Problem> make_pmsm(const ParameterValues& p) {
 
     if (p.has("data")) {
         std::string clash;
-        for (const char* key : {"speed", "load", "noise_i", "noise_u", "seed", "n", "deadtime", "delay", "adc_bits"})
+        for (const char* key : {"speed", "load", "noise_i", "noise_u", "seed", "n", "deadtime", "delay", "adc_bits", "hold"})
             if (p.given(key))
                 clash += (clash.empty() ? "" : ", ") + std::string(key);
         if (!clash.empty())
@@ -62,6 +62,7 @@ std::unique_ptr<Problem> make_pmsm(const ParameterValues& p) {
     config.dead_time = p.real("deadtime");
     config.delay_periods = static_cast<int>(p.integer("delay"));
     config.adc_bits = static_cast<int>(p.integer("adc_bits"));
+    config.stator_frame_hold = p.text("hold") == "stator";
     return std::make_unique<pmsm::SteadyStateProblem>(pmsm::simulate_dataset(config), weights, std::move(box),
                                                       evaluation);
 }
@@ -85,6 +86,9 @@ void register_pmsm(ProblemRegistry& registry) {
           ParameterInfo::real("deadtime", 0.0, 0.0, 1e-5, "simulated inverter dead time, s (0: ideal inverter)"),
           ParameterInfo::integer("delay", 0, 0, 1, "simulated computation delay, control periods"),
           ParameterInfo::integer("adc_bits", 0, 0, 24, "simulated phase-current ADC bits over +-20 A (0: off)"),
+          ParameterInfo::choice("hold", "dq", {"dq", "stator"},
+                                "simulated voltage hold: rotor dq frame (ideal) or stator frame (a real inverter "
+                                "without angle compensation: the vector lags by omega Ts / 2)"),
           ParameterInfo::real("id_threshold", 1.0, 0.0, 1e6,
                               "with data= and no 'injected' column: |id| above this (A) marks the injected state")
               .open_below(),
