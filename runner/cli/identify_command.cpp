@@ -15,6 +15,7 @@
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/least_squares.hpp"
 #include "problems/pmsm/steady_state_data.hpp"
+#include "problems/pmsm/steady_state_problem.hpp"
 #include "runner/cli/command.hpp"
 
 namespace mhb::cli {
@@ -128,6 +129,9 @@ int run_identify_command(const std::vector<std::string>& args) {
     for (int j = 0; j < 4; ++j)
         if (r.theta[j] <= 0)
             out << "warning: " << names[j] << " came out non-positive: the data do not support the model\n";
+    if (!pmsm::paper_bounds().contains(r.theta))
+        out << "note: the estimate lies outside the paper's search box (Rs 0-0.5, Ld and Lq 0-0.01, psi 0-0.1); an\n"
+               "optimiser confined to that box cannot reach it (pmsm: reports the box-constrained optimum)\n";
     if (r.standard_error[0] > 0.1 * std::fabs(r.theta[0]))
         out << "warning: Rs is determined to worse than 10 %; a larger injection or more samples help\n";
     return exit_ok;
