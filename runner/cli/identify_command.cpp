@@ -99,11 +99,11 @@ int run_identify_command(const std::vector<std::string>& args) {
     out << '\n';
     for (int j = 0; j < 4; ++j) {
         char buf[240];
-        std::snprintf(buf, sizeof buf, "%s   %-14.8g  %-14.4g  %7.3f %%", names[j], r.theta[j], r.standard_error[j],
+        std::snprintf(buf, sizeof buf, "%s   %-14.8g  %-14.4g  %9.3g %%", names[j], r.theta[j], r.standard_error[j],
                       100.0 * r.standard_error[j] / std::fabs(r.theta[j]));
         out << buf;
         if (truth) {
-            std::snprintf(buf, sizeof buf, "     %-14.8g  %+8.3f %%", (*truth)[j],
+            std::snprintf(buf, sizeof buf, "     %-14.8g  %+9.3g %%", (*truth)[j],
                           100.0 * (r.theta[j] - (*truth)[j]) / (*truth)[j]);
             out << buf;
         }
