@@ -17,6 +17,8 @@ namespace mhb::cli {
 int run_run_command(const std::vector<std::string>& args);
 int run_list_command(const std::vector<std::string>& args);
 int run_report_command(const std::vector<std::string>& args);
+int run_simulate_command(const std::vector<std::string>& args);
+int run_identify_command(const std::vector<std::string>& args);
 
 namespace {
 
@@ -25,6 +27,8 @@ const std::vector<Command>& commands() {
         {"run", "run a study (algorithms x problems x runs) in parallel into a directory", run_run_command},
         {"list", "list algorithms, problems and study presets with their parameters", run_list_command},
         {"report", "tables, statistics, curve data and figures of a finished study", run_report_command},
+        {"simulate", "simulate the paper's drive and write a dataset CSV", run_simulate_command},
+        {"identify", "least-squares Rs, Ld, Lq, psi with standard errors from a dataset CSV", run_identify_command},
     };
     return table;
 }
