@@ -12,16 +12,20 @@
 #include <vector>
 
 #include "algorithms/algorithm_registry.hpp"
+#include "problems/problem_registry.hpp"
 
 namespace {
 
-// The registry's own list, so the expectation follows as optimisers are added.
-std::string known_algorithm_names() {
+// The registries' own lists, so the expectations follow as components are added.
+template <class Registry>
+std::string known_names(const Registry& registry) {
     std::string names;
-    for (const auto& e : mhb::builtin_algorithms().entries())
+    for (const auto& e : registry.entries())
         names += (names.empty() ? "" : ", ") + e.name;
     return names;
 }
+std::string known_algorithm_names() { return known_names(mhb::builtin_algorithms()); }
+std::string known_problem_names() { return known_names(mhb::builtin_problems()); }
 namespace fs = std::filesystem;
 
 const fs::path work = fs::temp_directory_path() / "mhb_cli_run_test";
@@ -146,7 +150,7 @@ TEST(CliRun, BadInputGivesOneLinePerErrorNonZeroExitAndNoRunsCsv) {
         {"--algorithms nope --problems sphere --iterations 5",
          {"mhbench run: unknown algorithm 'nope'; known: " + known_algorithm_names()}},
         {"--algorithms random-search --problems nope --iterations 5",
-         {"mhbench run: unknown problem 'nope'; known: sphere"}},
+         {"mhbench run: unknown problem 'nope'; known: " + known_problem_names()}},
         {"--algorithms random-search:batch=0 --problems sphere --iterations 5",
          {"mhbench run: random-search: parameter 'batch' = 0 is outside [1, 1000000000]"}},
         {"--algorithms random-search --problems sphere:dim=0 --runs 0 --iterations 5 --threads 0",
