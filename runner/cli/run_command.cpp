@@ -3,6 +3,7 @@
 // new runs, keeps the finished ones, and the same command resumes.
 #include "problems/spec.hpp"
 #include "results/store.hpp"
+#include "results/report.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/context.hpp"
 #include "runner/parallel_runner.hpp"
@@ -102,7 +103,10 @@ po::options_description make_options() {
         ("study-file", po::value<std::string>(),
          "start from a study file, e.g. DIR/study.ini of an earlier study; other options override its values")
         ("progress", po::bool_switch(), "show the progress bar even when stderr is not a terminal")
-        ("quiet,q", po::bool_switch(), "print nothing but errors (no progress bar, no summary)");
+        ("no-report", po::bool_switch(), "do not build the report (tables, curve data, figures) after the study; "
+                                         "`mhbench report DIR` builds it at any time")
+        ("no-figures", po::bool_switch(), "build the report without figures (they take most of its time)")
+        ("quiet,q", po::bool_switch(), "print nothing but errors (no progress bar, no summary, no tables)");
     // clang-format on
     return d;
 }
@@ -278,6 +282,16 @@ int run_run_command(const std::vector<std::string>& args) {
     }
     if (!quiet)
         print_summary(dir, outcome, wall.count());
+    if (vm["no-report"].as<bool>())
+        return exit_ok;
+    // The report is built from the directory alone, exactly as `mhbench report DIR` would.
+    ReportOptions report;
+    report.figures = !vm["no-figures"].as<bool>();
+    report.plot_script = std::filesystem::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
+    std::ostringstream discarded;
+    if (!quiet)
+        std::cout << '\n';
+    build_report(load_study(dir), report, quiet ? discarded : std::cout);
     return exit_ok;
 }
 

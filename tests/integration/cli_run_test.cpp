@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "algorithms/algorithm_registry.hpp"
+#include "cli_harness.hpp"
 #include "problems/problem_registry.hpp"
 
 namespace {
@@ -28,49 +29,14 @@ std::string known_algorithm_names() { return known_names(mhb::builtin_algorithms
 std::string known_problem_names() { return known_names(mhb::builtin_problems()); }
 namespace fs = std::filesystem;
 
-const fs::path work = fs::temp_directory_path() / "mhb_cli_run_test";
+const fs::path work = mhb::testing_cli::scratch_directory();
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
+using mhb::testing_cli::lines_of;
+using mhb::testing_cli::read_text;
+using Result = mhb::testing_cli::CliResult;
+using mhb::testing_cli::run_shell;
 
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);)
-        out.push_back(line);
-    return out;
-}
-
-struct Result {
-    int exit_code = -1;
-    std::string out;
-    std::string err;
-};
-
-// Runs a shell command line (the binary is substituted for "mhbench" at its start) and collects
-// its exit code, stdout and stderr.
-Result shell(const std::string& command) {
-    fs::create_directories(work);
-    // Named after the test, so that tests run in parallel (ctest -j) never share these files.
-    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    const fs::path out = work / (test + ".stdout");
-    const fs::path err = work / (test + ".stderr");
-    const std::string line = "(" + command + ") >" + out.string() + " 2>" + err.string();
-    const int status = std::system(line.c_str());
-    Result r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = read_text(out);
-    r.err = read_text(err);
-    return r;
-}
-
-Result mhbench(const std::string& args) {
-    return shell(std::string("'") + MHB_CLI_PATH + "' " + args);
-}
+Result mhbench(const std::string& args) { return mhb::testing_cli::run_mhbench(args); }
 
 fs::path fresh(const std::string& name) {
     const fs::path dir = work / name;
@@ -88,9 +54,9 @@ const char* const deterministic_files[] = {"runs.csv", "curves.csv", "checkpoint
 TEST(CliRun, OneAndTwoThreadsGiveByteIdenticalResults) {
     const fs::path one = fresh("threads1");
     const fs::path two = fresh("threads2");
-    const Result a = mhbench("run " + small_study + " --threads 1 --out " + one.string());
+    const Result a = mhbench("run " + small_study + " --no-report --threads 1 --out " + one.string());
     ASSERT_EQ(a.exit_code, 0) << a.err;
-    const Result b = mhbench("run " + small_study + " --threads 2 --out " + two.string());
+    const Result b = mhbench("run " + small_study + " --no-report --threads 2 --out " + two.string());
     ASSERT_EQ(b.exit_code, 0) << b.err;
     for (const char* name : deterministic_files)
         EXPECT_EQ(read_text(one / name), read_text(two / name)) << name;
@@ -109,8 +75,8 @@ TEST(CliRun, OneAndTwoThreadsGiveByteIdenticalResults) {
 TEST(CliRun, StudyFileRunsTheSameStudyAgain) {
     const fs::path first = fresh("original");
     const fs::path again = fresh("from_file");
-    ASSERT_EQ(mhbench("run " + small_study + " --threads 2 --quiet --out " + first.string()).exit_code, 0);
-    const Result r = mhbench("run --study-file " + (first / "study.ini").string() +
+    ASSERT_EQ(mhbench("run " + small_study + " --no-report --threads 2 --quiet --out " + first.string()).exit_code, 0);
+    const Result r = mhbench("run --no-report --study-file " + (first / "study.ini").string() +
                              " --threads 1 --quiet --out " + again.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.out, ""); // --quiet
@@ -118,7 +84,7 @@ TEST(CliRun, StudyFileRunsTheSameStudyAgain) {
         EXPECT_EQ(read_text(first / name), read_text(again / name)) << name;
     // Options override the file: another seed gives another study with other results.
     const fs::path other = fresh("other_seed");
-    ASSERT_EQ(mhbench("run --study-file " + (first / "study.ini").string() + " --seed 10 --quiet --out " +
+    ASSERT_EQ(mhbench("run --no-report --study-file " + (first / "study.ini").string() + " --seed 10 --quiet --out " +
                       other.string())
                   .exit_code,
               0);
@@ -127,7 +93,7 @@ TEST(CliRun, StudyFileRunsTheSameStudyAgain) {
 
 TEST(CliRun, PresetsRunAndOptionsOverrideThem) {
     const fs::path dir = fresh("smoke");
-    const Result r = mhbench("run --study smoke --runs 3 --evaluations 200 --quiet --out " + dir.string());
+    const Result r = mhbench("run --study smoke --runs 3 --evaluations 200 --no-report --quiet --out " + dir.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string ini = read_text(dir / "study.ini");
     EXPECT_NE(ini.find("algorithm = random-search\nproblem = sphere:dim=5\nruns = 3\n"), std::string::npos)
@@ -181,7 +147,7 @@ TEST(CliRun, BadInputGivesOneLinePerErrorNonZeroExitAndNoRunsCsv) {
 TEST(CliRun, AFinishedStudyIsKeptUnlessOverwriteIsGiven) {
     const fs::path dir = fresh("finished");
     const std::string args =
-        "run --algorithms random-search --problems sphere:dim=2 --runs 2 --iterations 3 --out " +
+        "run --algorithms random-search --problems sphere:dim=2 --runs 2 --iterations 3 --no-report --out " +
         dir.string();
     ASSERT_EQ(mhbench(args).exit_code, 0);
     const std::string runs = read_text(dir / "runs.csv");
@@ -201,7 +167,7 @@ TEST(CliRun, InterruptKeepsFinishedRunsAndTheSameCommandResumes) {
     // Far more work than the test waits for (1000 runs of about 20 ms).
     const std::string command =
         std::string("'") + MHB_CLI_PATH +
-        "' run --algorithms random-search:batch=1000 --problems sphere:dim=5 --runs 1000 "
+        "' run --no-report --algorithms random-search:batch=1000 --problems sphere:dim=5 --runs 1000 "
         "--evaluations 200000 --threads 1 --out " +
         dir.string();
     // SIGINT as soon as the journal grows, i.e. once this session has journaled a run.
@@ -214,7 +180,7 @@ TEST(CliRun, InterruptKeepsFinishedRunsAndTheSameCommandResumes) {
         // "interrupted: K of 1000 runs kept in DIR; run the same command again to resume"
         return std::stoll(err.substr(err.find(':') + 2));
     };
-    const Result first = shell(interrupt);
+    const Result first = run_shell(interrupt);
     EXPECT_EQ(first.exit_code, 130) << first.err;
     EXPECT_EQ(lines_of(first.err),
               std::vector<std::string>{"interrupted: " + std::to_string(kept_of(first.err)) +
@@ -225,7 +191,7 @@ TEST(CliRun, InterruptKeepsFinishedRunsAndTheSameCommandResumes) {
     EXPECT_TRUE(fs::exists(dir / "journal.txt"));
 
     // The same command again picks up where it stopped: the count only grows.
-    const Result second = shell(interrupt);
+    const Result second = run_shell(interrupt);
     EXPECT_EQ(second.exit_code, 130) << second.err;
     EXPECT_GE(kept_of(second.err), kept_of(first.err) + 1);
     EXPECT_FALSE(fs::exists(dir / "runs.csv"));

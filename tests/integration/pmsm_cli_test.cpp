@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli_harness.hpp"
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/drive_simulator.hpp"
 
@@ -19,24 +20,11 @@ struct Result {
 };
 
 Result run_cli(const std::string& arguments) {
-    const std::string capture = testing::TempDir() + "pmsm_cli_output.txt";
-    const std::string command = std::string(MHB_CLI_PATH) + " " + arguments + " > " + capture + " 2>&1";
-    const int status = std::system(command.c_str());
-    Result r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(capture);
-    std::stringstream text;
-    text << in.rdbuf();
-    r.output = text.str();
-    return r;
+    const auto r = mhb::testing_cli::run_mhbench(arguments);
+    return {r.exit_code, r.out + r.err};
 }
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using mhb::testing_cli::read_text;
 
 // The written file is what the library simulates for the same settings, bit for bit (the CSV
 // holds every double exactly), and two runs write identical bytes.
@@ -46,7 +34,7 @@ TEST(PmsmCli, SimulateWritesTheDatasetOfTheLibrary) {
     const std::string options = " --speed 2000 --load 3 --noise-i 0.02 --noise-u 0.5 --seed 9 --samples 100";
     ASSERT_EQ(run_cli("simulate --out " + a + options).exit_code, 0);
     ASSERT_EQ(run_cli("simulate --out " + b + options).exit_code, 0);
-    EXPECT_EQ(slurp(a), slurp(b));
+    EXPECT_EQ(read_text(a), read_text(b));
 
     mhb::pmsm::SimulatorConfig config;
     config.condition = {2000.0, 3.0};

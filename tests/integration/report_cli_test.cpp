@@ -1,6 +1,7 @@
 // `mhbench report` end to end through the executable: a finished study gives the tables on stdout
 // and exit 0; a damaged study or a bad option gives exactly one line on stderr naming the problem
 // and a non-zero exit (1 for bad data, 2 for a bad command line).
+#include "cli_harness.hpp"
 #include "results/store.hpp"
 
 #include <cstdlib>
@@ -25,31 +26,10 @@ struct TemporaryPaths {
     }
 } temporary_paths;
 
-struct Outcome {
-    int exit_code = -1;
-    std::string out;
-    std::string err;
-};
+using Outcome = mhb::testing_cli::CliResult;
+using mhb::testing_cli::read_text;
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path);
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
-
-Outcome run_cli(const std::string& arguments) {
-    // The process id keeps tests that CTest runs in parallel (one process each) apart.
-    const std::string pid = std::to_string(::getpid());
-    const fs::path out = fs::temp_directory_path() / ("mhb_report_cli_stdout_" + pid + ".txt");
-    const fs::path err = fs::temp_directory_path() / ("mhb_report_cli_stderr_" + pid + ".txt");
-    temporary_paths.paths.push_back(out);
-    temporary_paths.paths.push_back(err);
-    const std::string command = std::string("'") + MHB_CLI_PATH + "' " + arguments + " >'" + out.string() +
-                                "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
-}
+Outcome run_cli(const std::string& arguments) { return mhb::testing_cli::run_mhbench(arguments); }
 
 fs::path small_study(const std::string& name) {
     const fs::path dir =

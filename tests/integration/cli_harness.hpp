@@ -1,0 +1,67 @@
+// Runs the real `mhbench` binary (MHB_CLI_PATH) for the integration tests and collects its exit
+// code, stdout and stderr. Output goes through files named after the process and the test, so
+// tests that CTest runs in parallel never share them.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace mhb::testing_cli {
+
+struct CliResult {
+    int exit_code = -1;
+    std::string out;
+    std::string err;
+};
+
+inline std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+inline std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        out.push_back(line);
+    return out;
+}
+
+// A scratch directory for this test binary.
+inline std::filesystem::path scratch_directory() {
+    const auto dir = std::filesystem::temp_directory_path() / ("mhb_cli_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// Runs a shell command line and collects what it printed.
+inline CliResult run_shell(const std::string& command) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string name = info != nullptr ? std::string(info->test_suite_name()) + "." + info->name() : "none";
+    const auto out = scratch_directory() / (name + ".stdout");
+    const auto err = scratch_directory() / (name + ".stderr");
+    const std::string line = "(" + command + ") >'" + out.string() + "' 2>'" + err.string() + "'";
+    const int status = std::system(line.c_str());
+    CliResult r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = read_text(out);
+    r.err = read_text(err);
+    return r;
+}
+
+// Runs `mhbench ARGS` (ARGS as typed in a shell).
+inline CliResult run_mhbench(const std::string& args) {
+    return run_shell(std::string("'") + MHB_CLI_PATH + "' " + args);
+}
+
+} // namespace mhb::testing_cli
