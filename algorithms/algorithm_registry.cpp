@@ -3,9 +3,22 @@
 namespace mhb {
 
 // One line per optimiser; each is defined in its own file.
+void register_de(AlgorithmRegistry& registry);
+void register_lshade(AlgorithmRegistry& registry);
+void register_cmaes(AlgorithmRegistry& registry);
+void register_spso2011(AlgorithmRegistry& registry);
+void register_etlbo(AlgorithmRegistry& registry);
+void register_jaya(AlgorithmRegistry& registry);
+void register_nlopt(AlgorithmRegistry& registry);
 
 void register_builtin_algorithms(AlgorithmRegistry& registry) {
-    (void)registry;
+    register_de(registry);
+    register_lshade(registry);
+    register_cmaes(registry);
+    register_spso2011(registry);
+    register_etlbo(registry);
+    register_jaya(registry);
+    register_nlopt(registry);
 }
 
 const AlgorithmRegistry& builtin_algorithms() {
