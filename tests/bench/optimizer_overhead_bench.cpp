@@ -13,6 +13,7 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/sampling.hpp"
 #include "problems/problem_registry.hpp"
+#include "tests/unit/algorithms/baselines_test_problems.hpp" // baseline_specs(): the optimisers the tests cover
 
 namespace mhb {
 namespace {
@@ -64,13 +65,7 @@ void optimizer_run(benchmark::State& state, const std::string& spec) {
 
 const bool registered = [] {
     benchmark::RegisterBenchmark("objective_only", objective_only)->Unit(benchmark::kMillisecond);
-    std::vector<std::string> specs;
-    for (const auto& entry : builtin_algorithms().entries())
-        specs.push_back(entry.name);
-    for (const char* name : {"GN_ISRES", "GN_ESCH", "GN_DIRECT_L", "GN_MLSL_LDS", "LN_BOBYQA", "LN_NELDERMEAD",
-                             "LN_SBPLX", "LN_COBYLA"})
-        specs.push_back(std::string("nlopt:algorithm=") + name);
-    for (const auto& spec : specs)
+    for (const auto& spec : test::baseline_specs())
         benchmark::RegisterBenchmark(("optimizer/" + spec).c_str(), optimizer_run, spec)->Unit(benchmark::kMillisecond);
     return true;
 }();
