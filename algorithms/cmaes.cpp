@@ -16,6 +16,10 @@
 // range of the current and the last 10 + ceil(30 D / lambda) generations' best f, TolX 1e-12 * sigma0,
 // condition number of C above 1e14, no effect of an axis or of a coordinate, a non-finite sigma.
 // Evaluations: lambda per iteration (the first generation is iteration 0).
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/sampling.hpp"
+
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -23,11 +27,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <Eigen/Eigenvalues>
-
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/sampling.hpp"
 
 namespace mhb {
 namespace {
@@ -43,7 +42,8 @@ public:
 
     void run(Objective& objective, Rng& rng) const override {
         const Eigen::Index n = objective.dimension();
-        long long lambda = lambda0_ > 0 ? lambda0_ : 4 + static_cast<long long>(std::floor(3.0 * std::log(n)));
+        long long lambda =
+            lambda0_ > 0 ? lambda0_ : 4 + static_cast<long long>(std::floor(3.0 * std::log(n)));
         bool first = true;
         while (!objective.exhausted()) {
             run_once(objective, rng, static_cast<int>(lambda), first);
@@ -71,7 +71,8 @@ private:
         const double c_c = (4.0 + mu_eff / dn) / (dn + 4.0 + 2.0 * mu_eff / dn);
         const double c_s = (mu_eff + 2.0) / (dn + mu_eff + 5.0);
         const double c_1 = 2.0 / ((dn + 1.3) * (dn + 1.3) + mu_eff);
-        const double c_mu = std::min(1.0 - c_1, 2.0 * (mu_eff - 2.0 + 1.0 / mu_eff) / ((dn + 2.0) * (dn + 2.0) + mu_eff));
+        const double c_mu =
+            std::min(1.0 - c_1, 2.0 * (mu_eff - 2.0 + 1.0 / mu_eff) / ((dn + 2.0) * (dn + 2.0) + mu_eff));
         const double d_s = 1.0 + 2.0 * std::max(0.0, std::sqrt((mu_eff - 1.0) / (dn + 1.0)) - 1.0) + c_s;
         const double chi_n = std::sqrt(dn) * (1.0 - 1.0 / (4.0 * dn) + 1.0 / (21.0 * dn * dn));
         const auto eigen_gap = static_cast<long long>(std::max(1.0, 1.0 / ((c_1 + c_mu) * dn * 10.0)));
@@ -118,8 +119,9 @@ private:
             ++generation;
 
             std::iota(order.begin(), order.end(), 0);
-            std::stable_sort(order.begin(), order.end(),
-                             [&](int a, int bb) { return f[static_cast<std::size_t>(a)] < f[static_cast<std::size_t>(bb)]; });
+            std::stable_sort(order.begin(), order.end(), [&](int a, int bb) {
+                return f[static_cast<std::size_t>(a)] < f[static_cast<std::size_t>(bb)];
+            });
 
             Eigen::VectorXd y_w = Eigen::VectorXd::Zero(n);
             for (int i = 0; i < mu; ++i)
@@ -167,9 +169,10 @@ private:
             const Eigen::Index axis = static_cast<Eigen::Index>(generation % n);
             const bool no_effect_axis =
                 ((m + 0.1 * sigma * diag_d[axis] * b.col(axis)).array() == m.array()).all();
-            const bool no_effect_coord = ((m.array() + 0.2 * sigma * c.diagonal().cwiseSqrt().array()) == m.array()).any();
-            if (tol_fun || tol_x || ill_conditioned || no_effect_axis || no_effect_coord || !std::isfinite(sigma) ||
-                sigma > 1e6)
+            const bool no_effect_coord =
+                ((m.array() + 0.2 * sigma * c.diagonal().cwiseSqrt().array()) == m.array()).any();
+            if (tol_fun || tol_x || ill_conditioned || no_effect_axis || no_effect_coord ||
+                !std::isfinite(sigma) || sigma > 1e6)
                 return;
         }
     }
@@ -182,27 +185,28 @@ private:
 } // namespace
 
 void register_cmaes(AlgorithmRegistry& registry) {
-    registry.add({"cmaes",
-                  "CMA-ES (mu/mu_w, lambda) with rank-one and rank-mu updates and CSA, optional IPOP restarts; "
-                  "lambda evaluations per iteration",
-                  "Hansen (2016), The CMA Evolution Strategy: A Tutorial, arXiv:1604.00772; IPOP: Auger and Hansen "
-                  "(2005), IEEE CEC 2005",
-                  {ParameterInfo::integer("lambda", 0, 0, 1000000,
-                                          "offspring per generation; 0 = 4 + floor(3 ln D) (Hansen 2016); else >= 2"),
-                   ParameterInfo::real("sigma0", 0.3, 0.0, 1.0,
-                                       "initial step size as a fraction of the box width (Hansen 2016: 1/4 to 1/3)")
-                       .open_below(),
-                   ParameterInfo::choice("restarts", "ipop", {"ipop", "none"},
-                                         "after a stop criterion: restart with lambda doubled (IPOP, Auger and "
-                                         "Hansen 2005), or end the run early (none)")},
-                  [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
-                      const long long lambda = p.integer("lambda");
-                      if (lambda == 1)
-                          throw std::invalid_argument("cmaes: parameter 'lambda' = 1 is too small: give 0 (default) "
-                                                      "or at least 2 (mu = lambda / 2 parents)");
-                      return std::make_unique<CmaEs>(lambda, p.real("sigma0"),
-                                                     p.text("restarts") == "ipop" ? Restarts::ipop : Restarts::none);
-                  }});
+    registry.add(
+        {"cmaes",
+         "CMA-ES (mu/mu_w, lambda) with rank-one and rank-mu updates and CSA, optional IPOP restarts; "
+         "lambda evaluations per iteration",
+         "Hansen (2016), The CMA Evolution Strategy: A Tutorial, arXiv:1604.00772; IPOP: Auger and Hansen "
+         "(2005), IEEE CEC 2005",
+         {ParameterInfo::integer("lambda", 0, 0, 1000000,
+                                 "offspring per generation; 0 = 4 + floor(3 ln D) (Hansen 2016); else >= 2"),
+          ParameterInfo::real("sigma0", 0.3, 0.0, 1.0,
+                              "initial step size as a fraction of the box width (Hansen 2016: 1/4 to 1/3)")
+              .open_below(),
+          ParameterInfo::choice("restarts", "ipop", {"ipop", "none"},
+                                "after a stop criterion: restart with lambda doubled (IPOP, Auger and "
+                                "Hansen 2005), or end the run early (none)")},
+         [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
+             const long long lambda = p.integer("lambda");
+             if (lambda == 1)
+                 throw std::invalid_argument("cmaes: parameter 'lambda' = 1 is too small: give 0 (default) "
+                                             "or at least 2 (mu = lambda / 2 parents)");
+             return std::make_unique<CmaEs>(lambda, p.real("sigma0"),
+                                            p.text("restarts") == "ipop" ? Restarts::ipop : Restarts::none);
+         }});
 }
 
 } // namespace mhb

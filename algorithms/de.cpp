@@ -10,19 +10,20 @@
 // first try: F = 0.5, CR = 0.1 or 0.9; 0.9 since rotated problems need it).
 // Bounds: out-of-box trials are clamped by the Objective (BoundPolicy::clamp).
 // Evaluations: NP to initialise, then NP per iteration (one trial per member).
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/population.hpp"
+
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/population.hpp"
 
 namespace mhb {
 namespace {
 
 class DifferentialEvolution final : public Optimizer {
 public:
-    DifferentialEvolution(long long population, double f, double cr) : population_(population), f_(f), cr_(cr) {}
+    DifferentialEvolution(long long population, double f, double cr)
+        : population_(population), f_(f), cr_(cr) {}
 
     std::string name() const override { return "de"; }
 
@@ -38,12 +39,19 @@ public:
         while (!objective.exhausted()) {
             for (std::size_t i = 0; i < np; ++i) {
                 std::size_t r1 = 0, r2 = 0, r3 = 0;
-                do { r1 = rng.below(np); } while (r1 == i);
-                do { r2 = rng.below(np); } while (r2 == i || r2 == r1);
-                do { r3 = rng.below(np); } while (r3 == i || r3 == r1 || r3 == r2);
+                do {
+                    r1 = rng.below(np);
+                } while (r1 == i);
+                do {
+                    r2 = rng.below(np);
+                } while (r2 == i || r2 == r1);
+                do {
+                    r3 = rng.below(np);
+                } while (r3 == i || r3 == r1 || r3 == r2);
                 const auto k_rand = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(d)));
                 for (Eigen::Index k = 0; k < d; ++k)
-                    trial[k] = (rng.uniform() < cr_ || k == k_rand) ? x[r1][k] + f_ * (x[r2][k] - x[r3][k]) : x[i][k];
+                    trial[k] = (rng.uniform() < cr_ || k == k_rand) ? x[r1][k] + f_ * (x[r2][k] - x[r3][k])
+                                                                    : x[i][k];
                 const double f_trial = objective.evaluate(trial);
                 if (f_trial <= fx[i]) {
                     next[i] = trial;
@@ -68,21 +76,23 @@ private:
 } // namespace
 
 void register_de(AlgorithmRegistry& registry) {
-    registry.add({"de",
-                  "differential evolution DE/rand/1/bin; NP evaluations per iteration",
-                  "Storn and Price (1997), J. Global Optim. 11:341-359",
-                  {ParameterInfo::integer("np", 0, 0, 1000000,
-                                          "population size; 0 = 10*D (Storn and Price 1997); otherwise at least 4"),
-                   ParameterInfo::real("F", 0.5, 0.0, 2.0, "differential weight (Storn and Price 1997: 0.5)").open_below(),
-                   ParameterInfo::real("CR", 0.9, 0.0, 1.0, "crossover probability (Storn and Price 1997: 0.9)")},
-                  [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
-                      const long long np = p.integer("np");
-                      if (np > 0 && np < 4)
-                          throw std::invalid_argument("de: parameter 'np' = " + std::to_string(np) +
-                                                      " is too small: DE/rand/1 needs the target and three other "
-                                                      "members (0 or at least 4)");
-                      return std::make_unique<DifferentialEvolution>(np, p.real("F"), p.real("CR"));
-                  }});
+    registry.add(
+        {"de",
+         "differential evolution DE/rand/1/bin; NP evaluations per iteration",
+         "Storn and Price (1997), J. Global Optim. 11:341-359",
+         {ParameterInfo::integer("np", 0, 0, 1000000,
+                                 "population size; 0 = 10*D (Storn and Price 1997); otherwise at least 4"),
+          ParameterInfo::real("F", 0.5, 0.0, 2.0, "differential weight (Storn and Price 1997: 0.5)")
+              .open_below(),
+          ParameterInfo::real("CR", 0.9, 0.0, 1.0, "crossover probability (Storn and Price 1997: 0.9)")},
+         [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
+             const long long np = p.integer("np");
+             if (np > 0 && np < 4)
+                 throw std::invalid_argument("de: parameter 'np' = " + std::to_string(np) +
+                                             " is too small: DE/rand/1 needs the target and three other "
+                                             "members (0 or at least 4)");
+             return std::make_unique<DifferentialEvolution>(np, p.real("F"), p.real("CR"));
+         }});
 }
 
 } // namespace mhb

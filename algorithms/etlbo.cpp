@@ -14,14 +14,14 @@
 // the elite sizes Rao and Patel tested, 4 to 16).
 // Bounds: the Objective clamps, as in the ITLBO paper.
 // Evaluations: NP to initialise, then 2 NP plus one per duplicate removed in each iteration.
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/population.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/population.hpp"
 
 namespace mhb {
 namespace {
@@ -101,7 +101,8 @@ public:
     }
 
 private:
-    static void accept_if_better(Objective& objective, Eigen::VectorXd& candidate, Eigen::VectorXd& x, double& fx) {
+    static void accept_if_better(Objective& objective, Eigen::VectorXd& candidate, Eigen::VectorXd& x,
+                                 double& fx) {
         const double f = objective.evaluate(candidate);
         if (f < fx) {
             x = candidate;
@@ -116,19 +117,21 @@ private:
 } // namespace
 
 void register_etlbo(AlgorithmRegistry& registry) {
-    registry.add({"etlbo",
-                  "elitist TLBO: teacher and learner phases, elites replace the worst, duplicates mutated; "
-                  "2 NP (+ duplicates) evaluations per iteration",
-                  "Rao and Patel (2012), Int. J. Industrial Engineering Computations 3:535-560",
-                  {ParameterInfo::integer("np", 50, 2, 1000000, "population size (50: the ITLBO paper's NP)"),
-                   ParameterInfo::integer("elite", 4, 0, 1000000,
-                                          "elites kept per iteration (Rao and Patel 2012 tested 4 to 16); < np")},
-                  [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
-                      if (p.integer("elite") >= p.integer("np"))
-                          throw std::invalid_argument("etlbo: parameter 'elite' = " + std::to_string(p.integer("elite")) +
-                                                      " must be smaller than 'np' = " + std::to_string(p.integer("np")));
-                      return std::make_unique<Etlbo>(p.integer("np"), p.integer("elite"));
-                  }});
+    registry.add(
+        {"etlbo",
+         "elitist TLBO: teacher and learner phases, elites replace the worst, duplicates mutated; "
+         "2 NP (+ duplicates) evaluations per iteration",
+         "Rao and Patel (2012), Int. J. Industrial Engineering Computations 3:535-560",
+         {ParameterInfo::integer("np", 50, 2, 1000000, "population size (50: the ITLBO paper's NP)"),
+          ParameterInfo::integer("elite", 4, 0, 1000000,
+                                 "elites kept per iteration (Rao and Patel 2012 tested 4 to 16); < np")},
+         [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
+             if (p.integer("elite") >= p.integer("np"))
+                 throw std::invalid_argument(
+                     "etlbo: parameter 'elite' = " + std::to_string(p.integer("elite")) +
+                     " must be smaller than 'np' = " + std::to_string(p.integer("np")));
+             return std::make_unique<Etlbo>(p.integer("np"), p.integer("elite"));
+         }});
 }
 
 } // namespace mhb

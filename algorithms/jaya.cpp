@@ -8,13 +8,13 @@
 // Default NP = 50: the population of the ITLBO paper's study, so that the two compare at equal NP.
 // Bounds: the Objective clamps (Rao clamps to the bounds as well).
 // Evaluations: NP to initialise, then NP per iteration.
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/population.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
-
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/population.hpp"
 
 namespace mhb {
 namespace {
@@ -60,13 +60,14 @@ private:
 } // namespace
 
 void register_jaya(AlgorithmRegistry& registry) {
-    registry.add({"jaya",
-                  "Jaya: move towards the best and away from the worst, greedy; NP evaluations per iteration",
-                  "Rao (2016), Int. J. Industrial Engineering Computations 7:19-34",
-                  {ParameterInfo::integer("np", 50, 2, 1000000, "population size (50: the ITLBO paper's NP)")},
-                  [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
-                      return std::make_unique<Jaya>(p.integer("np"));
-                  }});
+    registry.add(
+        {"jaya",
+         "Jaya: move towards the best and away from the worst, greedy; NP evaluations per iteration",
+         "Rao (2016), Int. J. Industrial Engineering Computations 7:19-34",
+         {ParameterInfo::integer("np", 50, 2, 1000000, "population size (50: the ITLBO paper's NP)")},
+         [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
+             return std::make_unique<Jaya>(p.integer("np"));
+         }});
 }
 
 } // namespace mhb

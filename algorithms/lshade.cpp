@@ -14,15 +14,15 @@
 // dG/dNFE = 1/N(NFE) and N falls linearly, G = MAX_NFE ln(N_init/N_min) / (N_init - N_min), so
 // MAX_NFE = G (N_init - N_min) / ln(N_init/N_min) (N_init when the two sizes are equal).
 // Evaluations: N_init to initialise, then the current population size N_G per iteration.
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/population.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/population.hpp"
 
 namespace mhb {
 namespace {
@@ -57,11 +57,12 @@ public:
         const auto n_init = static_cast<std::size_t>(std::llround(s_.r_ninit * static_cast<double>(d)));
         const auto n_min = static_cast<std::size_t>(s_.n_min);
         if (n_init < n_min)
-            throw std::invalid_argument("lshade: initial population round(r_ninit * D) = " + std::to_string(n_init) +
-                                        " is smaller than n_min = " + std::to_string(n_min) +
-                                        "; raise 'r_ninit' (the population is too small)");
-        const double max_nfe = max_evaluations(objective.budget(), static_cast<double>(n_init),
-                                               static_cast<double>(n_min));
+            throw std::invalid_argument(
+                "lshade: initial population round(r_ninit * D) = " + std::to_string(n_init) +
+                " is smaller than n_min = " + std::to_string(n_min) +
+                "; raise 'r_ninit' (the population is too small)");
+        const double max_nfe =
+            max_evaluations(objective.budget(), static_cast<double>(n_init), static_cast<double>(n_min));
 
         Population pop = random_population(objective, rng, n_init);
         auto& x = pop.x;
@@ -73,7 +74,8 @@ public:
         std::vector<bool> cr_terminal(h, false);
         std::size_t k_memory = 0;
         std::vector<Eigen::VectorXd> archive;
-        std::size_t archive_max = static_cast<std::size_t>(std::llround(s_.r_arc * static_cast<double>(n_init)));
+        std::size_t archive_max =
+            static_cast<std::size_t>(std::llround(s_.r_arc * static_cast<double>(n_init)));
 
         std::vector<Eigen::VectorXd> trials;
         std::vector<double> f_trials, cr_used, f_used, s_cr, s_f, s_delta;
@@ -82,8 +84,8 @@ public:
         while (!objective.exhausted()) {
             const std::size_t n = x.size();
             order = pop.ranking();
-            const std::size_t n_pbest =
-                std::max<std::size_t>(2, static_cast<std::size_t>(std::llround(s_.p_best * static_cast<double>(n))));
+            const std::size_t n_pbest = std::max<std::size_t>(
+                2, static_cast<std::size_t>(std::llround(s_.p_best * static_cast<double>(n))));
 
             trials.assign(n, Eigen::VectorXd());
             f_trials.assign(n, 0.0);
@@ -100,9 +102,13 @@ public:
 
                 const Eigen::VectorXd& pbest = x[order[rng.below(n_pbest)]];
                 std::size_t r1 = 0;
-                do { r1 = rng.below(n); } while (r1 == i);
+                do {
+                    r1 = rng.below(n);
+                } while (r1 == i);
                 std::size_t r2 = 0;
-                do { r2 = rng.below(n + archive.size()); } while (r2 == i || r2 == r1);
+                do {
+                    r2 = rng.below(n + archive.size());
+                } while (r2 == i || r2 == r1);
                 const Eigen::VectorXd& x_r2 = r2 < n ? x[r2] : archive[r2 - n];
 
                 const double fi = f_used[i];
@@ -155,15 +161,16 @@ public:
             }
 
             // Linear population size reduction: drop the worst, shrink the archive at random.
-            const double planned = std::round((static_cast<double>(n_min) - static_cast<double>(n_init)) / max_nfe *
-                                                  static_cast<double>(objective.evaluations()) +
+            const double planned = std::round((static_cast<double>(n_min) - static_cast<double>(n_init)) /
+                                                  max_nfe * static_cast<double>(objective.evaluations()) +
                                               static_cast<double>(n_init));
             const auto n_next = static_cast<std::size_t>(std::max(planned, static_cast<double>(n_min)));
             if (n_next < n) {
                 order = pop.ranking();
                 std::vector<Eigen::VectorXd> kept_x(n_next);
                 std::vector<double> kept_f(n_next);
-                std::sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(n_next)); // keep index order
+                std::sort(order.begin(),
+                          order.begin() + static_cast<std::ptrdiff_t>(n_next)); // keep index order
                 for (std::size_t j = 0; j < n_next; ++j) {
                     kept_x[j] = std::move(x[order[j]]);
                     kept_f[j] = fx[order[j]];
@@ -202,17 +209,19 @@ void register_lshade(AlgorithmRegistry& registry) {
          "L-SHADE: success-history adaptive DE with archive and linear population reduction (18D -> 4); "
          "N_G evaluations per iteration",
          "Tanabe and Fukunaga (2014), IEEE CEC 2014, pp. 1658-1665",
-         {ParameterInfo::real("r_ninit", 18.0, 0.0, 1e4, "initial population = round(r_ninit * D) (paper: 18)")
+         {ParameterInfo::real("r_ninit", 18.0, 0.0, 1e4,
+                              "initial population = round(r_ninit * D) (paper: 18)")
               .open_below(),
           ParameterInfo::integer("n_min", 4, 4, 1000000,
                                  "final population after reduction (paper: 4; current-to-pbest/1 needs 4)"),
           ParameterInfo::real("r_arc", 2.6, 0.0, 1e4, "archive size = round(r_arc * N) (paper: 2.6)"),
-          ParameterInfo::real("p", 0.11, 0.0, 1.0, "pbest drawn from the best max(2, round(p * N)) (paper: 0.11)")
+          ParameterInfo::real("p", 0.11, 0.0, 1.0,
+                              "pbest drawn from the best max(2, round(p * N)) (paper: 0.11)")
               .open_below(),
           ParameterInfo::integer("H", 6, 1, 1000, "success-history memory slots (paper: 6)")},
          [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
-             return std::make_unique<Lshade>(LshadeSettings{p.real("r_ninit"), p.integer("n_min"), p.real("r_arc"),
-                                                            p.real("p"), p.integer("H")});
+             return std::make_unique<Lshade>(LshadeSettings{p.real("r_ninit"), p.integer("n_min"),
+                                                            p.real("r_arc"), p.real("p"), p.integer("H")});
          }});
 }
 

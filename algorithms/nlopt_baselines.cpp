@@ -20,18 +20,17 @@
 // evaluations (default 100, the cost of one TLBO iteration at the ITLBO paper's NP = 50); the
 // first evaluation is iteration 0. Points are inside the box (NLopt gets it as bounds); the
 // Objective clamps whatever is not.
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/sampling.hpp"
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
 #include <exception>
+#include <nlopt.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <nlopt.hpp>
-
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/sampling.hpp"
 
 namespace mhb {
 namespace {
@@ -39,15 +38,16 @@ namespace {
 // The derivative-free NLopt algorithms that take box bounds and need no constraints.
 const std::vector<std::string>& global_algorithms() {
     static const std::vector<std::string> names = {
-        "GN_CRS2_LM", "GN_ISRES",           "GN_ESCH",     "GN_DIRECT",           "GN_DIRECT_L",
-        "GN_DIRECT_L_RAND", "GN_DIRECT_NOSCAL", "GN_DIRECT_L_NOSCAL", "GN_DIRECT_L_RAND_NOSCAL",
-        "GN_MLSL",  "GN_MLSL_LDS"};
+        "GN_CRS2_LM",       "GN_ISRES",           "GN_ESCH",
+        "GN_DIRECT",        "GN_DIRECT_L",        "GN_DIRECT_L_RAND",
+        "GN_DIRECT_NOSCAL", "GN_DIRECT_L_NOSCAL", "GN_DIRECT_L_RAND_NOSCAL",
+        "GN_MLSL",          "GN_MLSL_LDS"};
     return names;
 }
 
 const std::vector<std::string>& local_algorithms() {
-    static const std::vector<std::string> names = {"LN_BOBYQA", "LN_NELDERMEAD", "LN_SBPLX",      "LN_COBYLA",
-                                                   "LN_PRAXIS", "LN_NEWUOA_BOUND"};
+    static const std::vector<std::string> names = {"LN_BOBYQA", "LN_NELDERMEAD", "LN_SBPLX",
+                                                   "LN_COBYLA", "LN_PRAXIS",     "LN_NEWUOA_BOUND"};
     return names;
 }
 
@@ -57,8 +57,12 @@ std::vector<std::string> all_algorithms() {
     return names;
 }
 
-bool is_local(const std::string& name) { return name.rfind("LN_", 0) == 0; }
-bool is_mlsl(const std::string& name) { return name.rfind("GN_MLSL", 0) == 0; }
+bool is_local(const std::string& name) {
+    return name.rfind("LN_", 0) == 0;
+}
+bool is_mlsl(const std::string& name) {
+    return name.rfind("GN_MLSL", 0) == 0;
+}
 
 struct NloptSettings {
     std::string algorithm;
@@ -194,7 +198,8 @@ void register_nlopt(AlgorithmRegistry& registry) {
          "NLopt's derivative-free algorithms (CRS2, ISRES, ESCH, DIRECT, MLSL, BOBYQA, Nelder-Mead, Sbplx, "
          "COBYLA...) with an exact budget and random restarts; iteration = iteration_evals evaluations",
          "Johnson, The NLopt nonlinear-optimization package, https://github.com/stevengj/nlopt (v2.7)",
-         {ParameterInfo::choice("algorithm", "GN_CRS2_LM", all_algorithms(), "the NLopt algorithm, by its NLopt name"),
+         {ParameterInfo::choice("algorithm", "GN_CRS2_LM", all_algorithms(),
+                                "the NLopt algorithm, by its NLopt name"),
           ParameterInfo::choice("local", "LN_BOBYQA", local_algorithms(),
                                 "local optimiser of GN_MLSL and GN_MLSL_LDS (only for them)"),
           ParameterInfo::real("xtol_rel", 1e-8, 0.0, 1.0,
@@ -203,14 +208,16 @@ void register_nlopt(AlgorithmRegistry& registry) {
                               "relative f tolerance at which a local search ends and restarts"),
           ParameterInfo::integer("population", 0, 0, 1000000,
                                  "population of CRS2, ISRES, ESCH, MLSL; 0 = NLopt's default"),
-          ParameterInfo::integer("iteration_evals", 100, 1, 1000000000,
-                                 "evaluations per iteration in the trace (100 = one TLBO iteration at NP = 50)")},
+          ParameterInfo::integer(
+              "iteration_evals", 100, 1, 1000000000,
+              "evaluations per iteration in the trace (100 = one TLBO iteration at NP = 50)")},
          [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
-             NloptSettings s{p.text("algorithm"), p.text("local"),       p.real("xtol_rel"),
+             NloptSettings s{p.text("algorithm"), p.text("local"),         p.real("xtol_rel"),
                              p.real("ftol_rel"),  p.integer("population"), p.integer("iteration_evals")};
              if (p.given("local") && !is_mlsl(s.algorithm))
                  throw std::invalid_argument("nlopt: parameter 'local' = " + s.local +
-                                             " only applies to GN_MLSL and GN_MLSL_LDS, not to " + s.algorithm);
+                                             " only applies to GN_MLSL and GN_MLSL_LDS, not to " +
+                                             s.algorithm);
              if (is_local(s.algorithm) && s.xtol_rel == 0.0 && s.ftol_rel == 0.0)
                  throw std::invalid_argument("nlopt: " + s.algorithm +
                                              " needs 'xtol_rel' or 'ftol_rel' > 0 to end a local search");

@@ -2,15 +2,14 @@
 // does with one: draw it uniformly in the box (through the Objective, so it is counted) and rank it.
 #pragma once
 
-#include <algorithm>
-#include <numeric>
-#include <vector>
-
-#include <Eigen/Core>
-
 #include "algorithms/sampling.hpp"
 #include "problems/objective.hpp"
 #include "problems/rng.hpp"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <numeric>
+#include <vector>
 
 namespace mhb {
 
@@ -24,7 +23,8 @@ struct Population {
     [[nodiscard]] std::vector<std::size_t> ranking() const {
         std::vector<std::size_t> order(f.size());
         std::iota(order.begin(), order.end(), std::size_t{0});
-        std::stable_sort(order.begin(), order.end(), [this](std::size_t a, std::size_t b) { return f[a] < f[b]; });
+        std::stable_sort(order.begin(), order.end(),
+                         [this](std::size_t a, std::size_t b) { return f[a] < f[b]; });
         return order;
     }
 };

@@ -15,15 +15,15 @@
 // Particles move asynchronously (each sees its informants' latest bests) in a fresh random order
 // every iteration, as in Clerc's reference code.
 // Evaluations: S to initialise, then S per iteration.
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/sampling.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <numeric>
 #include <string>
 #include <vector>
-
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/sampling.hpp"
 
 namespace mhb {
 namespace {
@@ -85,7 +85,8 @@ public:
                         g[k] = x[i][k] + to_p / 2.0;
                 }
                 // Uniform in the ball: a Gaussian direction and a radius |G - x| * U^(1/D).
-                const double radius = (g - x[i]).norm() * std::pow(rng.uniform(), 1.0 / static_cast<double>(d));
+                const double radius =
+                    (g - x[i]).norm() * std::pow(rng.uniform(), 1.0 / static_cast<double>(d));
                 for (Eigen::Index k = 0; k < d; ++k)
                     direction[k] = rng.normal();
                 const double dir_norm = direction.norm();
@@ -127,20 +128,21 @@ private:
 } // namespace
 
 void register_spso2011(AlgorithmRegistry& registry) {
-    registry.add({"spso2011",
-                  "Standard PSO 2011: adaptive random topology (K = 3), hypersphere sampling around G; "
-                  "S evaluations per iteration",
-                  "Clerc (2012), Standard Particle Swarm Optimisation, hal-00764996; Zambrano-Bigiarini et al. "
-                  "(2013), IEEE CEC 2013",
-                  {ParameterInfo::integer("S", 40, 2, 1000000, "swarm size (SPSO 2011: 40)"),
-                   ParameterInfo::integer("K", 3, 1, 1000, "informants drawn per particle (SPSO 2011: 3)"),
-                   ParameterInfo::real("w", 1.0 / (2.0 * std::numbers::ln2), 0.0, 1.0,
-                                       "inertia weight (SPSO 2011: 1/(2 ln 2))"),
-                   ParameterInfo::real("c", 0.5 + std::numbers::ln2, 0.0, 10.0,
-                                       "acceleration coefficient (SPSO 2011: 1/2 + ln 2)")},
-                  [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
-                      return std::make_unique<Spso2011>(p.integer("S"), p.integer("K"), p.real("w"), p.real("c"));
-                  }});
+    registry.add(
+        {"spso2011",
+         "Standard PSO 2011: adaptive random topology (K = 3), hypersphere sampling around G; "
+         "S evaluations per iteration",
+         "Clerc (2012), Standard Particle Swarm Optimisation, hal-00764996; Zambrano-Bigiarini et al. "
+         "(2013), IEEE CEC 2013",
+         {ParameterInfo::integer("S", 40, 2, 1000000, "swarm size (SPSO 2011: 40)"),
+          ParameterInfo::integer("K", 3, 1, 1000, "informants drawn per particle (SPSO 2011: 3)"),
+          ParameterInfo::real("w", 1.0 / (2.0 * std::numbers::ln2), 0.0, 1.0,
+                              "inertia weight (SPSO 2011: 1/(2 ln 2))"),
+          ParameterInfo::real("c", 0.5 + std::numbers::ln2, 0.0, 10.0,
+                              "acceleration coefficient (SPSO 2011: 1/2 + ln 2)")},
+         [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
+             return std::make_unique<Spso2011>(p.integer("S"), p.integer("K"), p.real("w"), p.real("c"));
+         }});
 }
 
 } // namespace mhb

@@ -5,15 +5,14 @@
 //                         of the problem plus the Objective's counting, repair and trace.
 // An optimiser's overhead per evaluation is per_eval(optimizer) - per_eval(objective_only).
 // Run: build/release/tests/bench/optimizer_overhead_bench --benchmark_min_time=0.5
-#include <benchmark/benchmark.h>
-
-#include <string>
-#include <vector>
-
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/sampling.hpp"
 #include "problems/problem_registry.hpp"
 #include "tests/unit/algorithms/baselines_test_problems.hpp" // baseline_specs(): the optimisers the tests cover
+
+#include <benchmark/benchmark.h>
+#include <string>
+#include <vector>
 
 namespace mhb {
 namespace {
@@ -26,8 +25,8 @@ const Problem& cheap_problem() {
 }
 
 void per_evaluation_counter(benchmark::State& state, std::int64_t evaluations) {
-    state.counters["per_eval"] = benchmark::Counter(static_cast<double>(evaluations),
-                                                    benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["per_eval"] = benchmark::Counter(
+        static_cast<double>(evaluations), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void objective_only(benchmark::State& state) {
@@ -66,7 +65,8 @@ void optimizer_run(benchmark::State& state, const std::string& spec) {
 const bool registered = [] {
     benchmark::RegisterBenchmark("objective_only", objective_only)->Unit(benchmark::kMillisecond);
     for (const auto& spec : test::baseline_specs())
-        benchmark::RegisterBenchmark(("optimizer/" + spec).c_str(), optimizer_run, spec)->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("optimizer/" + spec).c_str(), optimizer_run, spec)
+            ->Unit(benchmark::kMillisecond);
     return true;
 }();
 

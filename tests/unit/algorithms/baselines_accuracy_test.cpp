@@ -5,17 +5,16 @@
 // evaluations; BOBYQA: 1e-9 relative on the steady-state quadratic) or the usual published
 // behaviour of the method, set about 100x looser than what these seeds reach, so that a broken
 // update (a wrong constant, a sign) fails them and rounding differences do not.
-#include <gtest/gtest.h>
-
-#include <algorithm>
-#include <memory>
-#include <string>
-#include <vector>
-
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/sampling.hpp"
 #include "baselines_test_problems.hpp"
 #include "problems/problem_registry.hpp"
+
+#include <algorithm>
+#include <gtest/gtest.h>
+#include <memory>
+#include <string>
+#include <vector>
 
 namespace mhb {
 namespace {
@@ -32,7 +31,9 @@ Result run(const std::string& spec, const Problem& problem, Budget budget, std::
     return {r.best_f - problem.known_optimum()->f, r.evaluations, r.evaluations_to_target, r.iteration_trace};
 }
 
-Budget evaluations(std::int64_t n) { return Budget{n, std::nullopt, std::nullopt}; }
+Budget evaluations(std::int64_t n) {
+    return Budget{n, std::nullopt, std::nullopt};
+}
 
 // Checks that every seed 1..5 reaches `gap` (relative to f* when `relative`).
 void expect_reaches(const std::string& spec, const Problem& problem, std::int64_t budget, double gap,

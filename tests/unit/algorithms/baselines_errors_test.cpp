@@ -1,21 +1,19 @@
 // Bad configuration is a clear error naming the component, the parameter and the rule; an error
 // inside the objective comes out of every optimiser with its own message (NLopt's C++ wrapper would
 // otherwise turn it into a bare "nlopt failure").
-#include <gtest/gtest.h>
-
-#include <stdexcept>
-#include <string>
-
 #include "algorithms/algorithm_registry.hpp"
 #include "baselines_test_problems.hpp"
 #include "problems/problem_registry.hpp"
+
+#include <gtest/gtest.h>
+#include <stdexcept>
+#include <string>
 
 namespace mhb {
 namespace {
 
 // The message of the std::invalid_argument that `f` throws ("" if it throws nothing).
-template <class F>
-std::string invalid_argument_message(F&& f) {
+template <class F> std::string invalid_argument_message(F&& f) {
     try {
         f();
     } catch (const std::invalid_argument& e) {
@@ -35,7 +33,8 @@ TEST(BaselinesErrors, BadParametersNameTheParameterAndTheRule) {
               "(0 or at least 4)");
     EXPECT_EQ(creation_error("de:F=0"), "de: parameter 'F' = 0 is outside (0, 2]");
     EXPECT_EQ(creation_error("cmaes:lambda=1").rfind("cmaes: parameter 'lambda' = 1 is too small", 0), 0u);
-    EXPECT_EQ(creation_error("etlbo:np=4,elite=4"), "etlbo: parameter 'elite' = 4 must be smaller than 'np' = 4");
+    EXPECT_EQ(creation_error("etlbo:np=4,elite=4"),
+              "etlbo: parameter 'elite' = 4 must be smaller than 'np' = 4");
     EXPECT_EQ(creation_error("spso2011:K=0"), "spso2011: parameter 'K' = 0 is outside [1, 1000]");
     EXPECT_EQ(creation_error("jaya:np=1"), "jaya: parameter 'np' = 1 is outside [2, 1e+06]");
 }
@@ -47,8 +46,9 @@ TEST(BaselinesErrors, UnknownNloptAlgorithmListsTheKnownOnes) {
     EXPECT_NE(message.find("LN_BOBYQA"), std::string::npos);
     // Gradient-based algorithms are not offered: every evaluation must go through the Objective.
     EXPECT_FALSE(creation_error("nlopt:algorithm=LD_LBFGS").empty());
-    EXPECT_EQ(creation_error("nlopt:algorithm=LN_SBPLX,local=LN_BOBYQA"),
-              "nlopt: parameter 'local' = LN_BOBYQA only applies to GN_MLSL and GN_MLSL_LDS, not to LN_SBPLX");
+    EXPECT_EQ(
+        creation_error("nlopt:algorithm=LN_SBPLX,local=LN_BOBYQA"),
+        "nlopt: parameter 'local' = LN_BOBYQA only applies to GN_MLSL and GN_MLSL_LDS, not to LN_SBPLX");
 }
 
 TEST(BaselinesErrors, LshadeRejectsAnInitialPopulationSmallerThanNmin) {

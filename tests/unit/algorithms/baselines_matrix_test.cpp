@@ -4,18 +4,16 @@
 // the same results when runs are spread over 2 threads as when they run one after another (NLopt's
 // thread-local random generator is the usual way to lose that).
 // The lead adds the real `pmsm` and `rastrigin` specs, and the runner's 1-vs-2-thread check, on merge.
-#include <gtest/gtest.h>
-
-#include <memory>
-#include <string>
-#include <vector>
-
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include "algorithms/algorithm_registry.hpp"
 #include "baselines_test_problems.hpp"
 #include "problems/problem_registry.hpp"
+
+#include <gtest/gtest.h>
+#include <memory>
+#include <string>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <vector>
 
 namespace mhb {
 namespace {
@@ -73,7 +71,8 @@ TEST(BaselinesMatrix, SpendsTheEvaluationBudgetExactlyAndIsDeterministic) {
             EXPECT_EQ(a.checkpoints.back().evaluations, a.evaluations) << where;
             // A different seed gives a different run. DIRECT_L is deterministic by design, and MLSL_LDS
             // samples a Sobol sequence, so only its (unimportant) first point depends on the seed.
-            if (spec.find("GN_DIRECT_L") == std::string::npos && spec.find("GN_MLSL_LDS") == std::string::npos) {
+            if (spec.find("GN_DIRECT_L") == std::string::npos &&
+                spec.find("GN_MLSL_LDS") == std::string::npos) {
                 const Outcome c = run(spec, *problem, budget, 43);
                 EXPECT_NE(a.best_x, c.best_x) << where;
             }

@@ -4,16 +4,15 @@
 // least-squares structure, eq. 2 and 11 of the ITLBO paper, with its exact optimum from QR).
 #pragma once
 
+#include "algorithms/algorithm_registry.hpp"
+#include "problems/problem.hpp"
+#include "problems/rng.hpp"
+
+#include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
-
-#include "algorithms/algorithm_registry.hpp"
-#include "problems/problem.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb::test {
 
@@ -60,7 +59,8 @@ public:
         rotation_ = Eigen::HouseholderQR<Eigen::MatrixXd>(g).householderQ();
         for (Eigen::Index k = 0; k < dimension; ++k) {
             shift_[k] = rng.uniform(-3.0, 3.0);
-            scale_[k] = std::pow(cond, dimension > 1 ? static_cast<double>(k) / static_cast<double>(dimension - 1) : 0.0);
+            scale_[k] = std::pow(
+                cond, dimension > 1 ? static_cast<double>(k) / static_cast<double>(dimension - 1) : 0.0);
         }
     }
     std::string name() const override { return "rotated_ellipsoid"; }
@@ -136,8 +136,8 @@ inline std::vector<std::string> baseline_specs() {
     std::vector<std::string> specs;
     for (const auto& entry : builtin_algorithms().entries())
         specs.push_back(entry.name);
-    for (const char* name : {"GN_ISRES", "GN_ESCH", "GN_DIRECT_L", "GN_MLSL_LDS", "LN_BOBYQA", "LN_NELDERMEAD",
-                             "LN_SBPLX", "LN_COBYLA"})
+    for (const char* name : {"GN_ISRES", "GN_ESCH", "GN_DIRECT_L", "GN_MLSL_LDS", "LN_BOBYQA",
+                             "LN_NELDERMEAD", "LN_SBPLX", "LN_COBYLA"})
         specs.push_back(std::string("nlopt:algorithm=") + name);
     return specs;
 }
@@ -153,13 +153,18 @@ struct RunOutcome {
     std::vector<CheckpointPoint> checkpoints;
 };
 
-inline RunOutcome run_spec(const std::string& spec, const Problem& problem, Budget budget, std::uint64_t seed) {
+inline RunOutcome run_spec(const std::string& spec, const Problem& problem, Budget budget,
+                           std::uint64_t seed) {
     const auto optimizer = builtin_algorithms().create(spec);
     Objective objective(problem, budget, optimizer->bound_policy());
     Rng rng(seed);
     run_to_budget(*optimizer, objective, rng);
-    return {objective.best_f(),         objective.best_x(),          objective.evaluations(),
-            objective.iterations(),     objective.evaluations_to_target(), objective.iteration_trace(),
+    return {objective.best_f(),
+            objective.best_x(),
+            objective.evaluations(),
+            objective.iterations(),
+            objective.evaluations_to_target(),
+            objective.iteration_trace(),
             objective.checkpoint_trace()};
 }
 
