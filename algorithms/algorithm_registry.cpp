@@ -6,12 +6,26 @@ namespace mhb {
 void register_itlbo(AlgorithmRegistry& registry);
 void register_tlbo(AlgorithmRegistry& registry);
 void register_pso(AlgorithmRegistry& registry);
+void register_spso2011(AlgorithmRegistry& registry);
+void register_de(AlgorithmRegistry& registry);
+void register_lshade(AlgorithmRegistry& registry);
+void register_cmaes(AlgorithmRegistry& registry);
+void register_etlbo(AlgorithmRegistry& registry);
+void register_jaya(AlgorithmRegistry& registry);
+void register_nlopt(AlgorithmRegistry& registry);
 void register_random_search(AlgorithmRegistry& registry);
 
 void register_builtin_algorithms(AlgorithmRegistry& registry) {
     register_itlbo(registry);
     register_tlbo(registry);
     register_pso(registry);
+    register_spso2011(registry);
+    register_de(registry);
+    register_lshade(registry);
+    register_cmaes(registry);
+    register_etlbo(registry);
+    register_jaya(registry);
+    register_nlopt(registry);
     register_random_search(registry);
 }
 

@@ -1,0 +1,74 @@
+// Each optimiser's own time per evaluation (its overhead, excluding the objective) on a very cheap
+// problem, the 10-D sphere, with a budget of 20000 evaluations per run.
+//   optimizer/<spec>      whole runs; the counter per_eval is the run's time per evaluation.
+//   objective_only        the same number of Objective::evaluate calls on stored points: the cost
+//                         of the problem plus the Objective's counting, repair and trace.
+// An optimiser's overhead per evaluation is per_eval(optimizer) - per_eval(objective_only).
+// Run: build/release/tests/bench/optimizer_overhead_bench --benchmark_min_time=0.5
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/sampling.hpp"
+#include "problems/problem_registry.hpp"
+#include "tests/unit/algorithms/baselines_test_problems.hpp" // baseline_specs(): the optimisers the tests cover
+
+#include <benchmark/benchmark.h>
+#include <string>
+#include <vector>
+
+namespace mhb {
+namespace {
+
+constexpr std::int64_t budget = 20000;
+
+const Problem& cheap_problem() {
+    static const auto problem = builtin_problems().create("sphere:dim=10");
+    return *problem;
+}
+
+void per_evaluation_counter(benchmark::State& state, std::int64_t evaluations) {
+    state.counters["per_eval"] = benchmark::Counter(
+        static_cast<double>(evaluations), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void objective_only(benchmark::State& state) {
+    const Problem& problem = cheap_problem();
+    Rng rng(1);
+    std::vector<Eigen::VectorXd> points(1000);
+    for (auto& p : points)
+        p = uniform_point(problem.bounds(), rng);
+    std::int64_t evaluations = 0;
+    for (auto _ : state) {
+        Objective objective(problem, Budget{budget, std::nullopt, std::nullopt});
+        for (std::int64_t i = 0; i < budget; ++i) {
+            Eigen::VectorXd x = points[static_cast<std::size_t>(i % 1000)];
+            benchmark::DoNotOptimize(objective.evaluate(x));
+        }
+        evaluations += objective.evaluations();
+    }
+    per_evaluation_counter(state, evaluations);
+}
+
+void optimizer_run(benchmark::State& state, const std::string& spec) {
+    const auto optimizer = builtin_algorithms().create(spec);
+    const Problem& problem = cheap_problem();
+    std::int64_t evaluations = 0;
+    std::uint64_t seed = 0;
+    for (auto _ : state) {
+        Objective objective(problem, Budget{budget, std::nullopt, std::nullopt}, optimizer->bound_policy());
+        Rng rng(++seed);
+        run_to_budget(*optimizer, objective, rng);
+        evaluations += objective.evaluations();
+        benchmark::DoNotOptimize(objective.best_f());
+    }
+    per_evaluation_counter(state, evaluations);
+}
+
+const bool registered = [] {
+    benchmark::RegisterBenchmark("objective_only", objective_only)->Unit(benchmark::kMillisecond);
+    for (const auto& spec : test::baseline_specs())
+        benchmark::RegisterBenchmark(("optimizer/" + spec).c_str(), optimizer_run, spec)
+            ->Unit(benchmark::kMillisecond);
+    return true;
+}();
+
+} // namespace
+} // namespace mhb
