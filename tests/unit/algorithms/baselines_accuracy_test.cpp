@@ -174,7 +174,10 @@ TEST(BaselinesAccuracy, EveryRegisteredOptimiserBeatsRandomSearch) {
             std::vector<double> gaps;
             for (std::uint64_t seed = 1; seed <= 5; ++seed)
                 gaps.push_back(run(spec, *problem, evaluations(budget), seed).gap);
-            EXPECT_LT(median(gaps), floor) << spec << " on " << problem->name();
+            if (spec == "random-search") // the registered baseline is this floor, draw for draw
+                EXPECT_EQ(median(gaps), floor) << problem->name();
+            else
+                EXPECT_LT(median(gaps), floor) << spec << " on " << problem->name();
         }
     }
 }

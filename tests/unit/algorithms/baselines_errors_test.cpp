@@ -27,7 +27,7 @@ std::string creation_error(const std::string& spec) {
 }
 
 TEST(BaselinesErrors, BadParametersNameTheParameterAndTheRule) {
-    EXPECT_EQ(creation_error("lshade:n_min=3"), "lshade: parameter 'n_min' = 3 is outside [4, 1e+06]");
+    EXPECT_EQ(creation_error("lshade:n_min=3"), "lshade: parameter 'n_min' = 3 is outside [4, 1000000]");
     EXPECT_EQ(creation_error("de:np=3"),
               "de: parameter 'np' = 3 is too small: DE/rand/1 needs the target and three other members "
               "(0 or at least 4)");
@@ -36,7 +36,7 @@ TEST(BaselinesErrors, BadParametersNameTheParameterAndTheRule) {
     EXPECT_EQ(creation_error("etlbo:np=4,elite=4"),
               "etlbo: parameter 'elite' = 4 must be smaller than 'np' = 4");
     EXPECT_EQ(creation_error("spso2011:K=0"), "spso2011: parameter 'K' = 0 is outside [1, 1000]");
-    EXPECT_EQ(creation_error("jaya:np=1"), "jaya: parameter 'np' = 1 is outside [2, 1e+06]");
+    EXPECT_EQ(creation_error("jaya:np=1"), "jaya: parameter 'np' = 1 is outside [2, 1000000]");
 }
 
 TEST(BaselinesErrors, UnknownNloptAlgorithmListsTheKnownOnes) {
