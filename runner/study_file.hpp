@@ -27,8 +27,9 @@ namespace mhb {
 
 std::string study_ini(const Study& study);
 
-// Parses study.ini text. Throws std::invalid_argument naming `origin`, the line and the key on an
-// unknown key, a repeated single-valued key or a malformed number. Specs are checked later, by
+// Parses study.ini text with Boost.Program_options' config-file parser. Throws
+// std::invalid_argument naming `origin` and the key on a syntax error, an unknown key, a repeated
+// single-valued key or a malformed number. Specs are checked later, by
 // prepare_study().
 Study parse_study_ini(std::string_view text, const std::string& origin);
 
