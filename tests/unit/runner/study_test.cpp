@@ -253,17 +253,22 @@ TEST(StudyPresets, PaperPresetIsThePapersSetup) {
     EXPECT_FALSE(s.budget.target_error.has_value());
 }
 
-TEST(StudyPresets, NamesAreUniqueUnknownNamesListTheKnownOnesAndSmokeIsRunnable) {
+TEST(StudyPresets, NamesAreUniqueUnknownNamesListTheKnownOnesAndEveryPresetIsValid) {
     std::set<std::string> names;
+    std::string known;
     for (const auto& p : study_presets()) {
         EXPECT_TRUE(names.insert(p.name).second) << p.name;
         EXPECT_FALSE(p.summary.empty());
+        known += (known.empty() ? "" : ", ") + p.name;
+        // Every preset names registered components with valid parameters.
+        EXPECT_NO_THROW((void)prepare_study(p.study)) << p.name;
     }
+    EXPECT_EQ(known.rfind("paper, ", 0), 0u) << known;
     try {
         (void)find_study_preset("nope");
         FAIL();
     } catch (const std::invalid_argument& e) {
-        EXPECT_STREQ(e.what(), "unknown study 'nope'; known: paper, smoke");
+        EXPECT_EQ(e.what(), "unknown study 'nope'; known: " + known);
     }
     const PreparedStudy smoke = prepare_study(find_study_preset("smoke").study);
     EXPECT_EQ(smoke.run_count(), 10);
