@@ -14,6 +14,7 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "cli_harness.hpp"
 #include "problems/problem_registry.hpp"
+#include "runner/study_presets.hpp"
 
 namespace {
 
@@ -27,6 +28,12 @@ std::string known_names(const Registry& registry) {
 }
 std::string known_algorithm_names() { return known_names(mhb::builtin_algorithms()); }
 std::string known_problem_names() { return known_names(mhb::builtin_problems()); }
+std::string known_study_names() {
+    std::string names;
+    for (const auto& p : mhb::study_presets())
+        names += (names.empty() ? "" : ", ") + p.name;
+    return names;
+}
 namespace fs = std::filesystem;
 
 const fs::path work = mhb::testing_cli::scratch_directory();
@@ -125,7 +132,7 @@ TEST(CliRun, BadInputGivesOneLinePerErrorNonZeroExitAndNoRunsCsv) {
           "mhbench run: study: runs = 0 is outside [1, 1000000]"}},
         {"--algorithms random-search --problems sphere",
          {"mhbench run: budget: give a number of iterations or of evaluations (or both)"}},
-        {"--study nope", {"mhbench run: unknown study 'nope'; known: paper, smoke"}},
+        {"--study nope", {"mhbench run: unknown study 'nope'; known: " + known_study_names()}},
         {"--algorithms random-search --problems sphere --iterations 5 --out " +
              (work / "a_file" / "sub").string(),
          {"mhbench run: " + (work / "a_file" / "sub").string() +
