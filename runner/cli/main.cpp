@@ -14,11 +14,13 @@
 namespace mhb::cli {
 
 // One line per subcommand; each is defined in its own file.
+int run_eval_command(const std::vector<std::string>& args);
 
 namespace {
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> table = {
+        {"eval", "print f at given points (check a function by hand)", run_eval_command},
     };
     return table;
 }
