@@ -19,16 +19,18 @@ inline constexpr Eigen::Index max_dimension = 40;
 // A vector of at most max_dimension entries, stored inline.
 using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, max_dimension, 1>;
 
-// T_osz of one value: sign(x) exp(x_hat + 0.049 (sin(c1 x_hat) + sin(c2 x_hat))), written as
-// COCO writes it (log / 0.1, then the 0.1 power).
+// T_osz of one value: sign(x) exp(x_hat + 0.049 (sin(c1 x_hat) + sin(c2 x_hat))), x_hat = log|x|,
+// c1 = 10, c2 = 7.9 for x > 0 and 5.5, 3.1 for x < 0. COCO writes it pow(exp(t + 0.49 (...)), 0.1)
+// with t = log|x| / 0.1; exp(0.1 t) is |x| itself, so this is x exp(0.049 (...)): the same value
+// to a few ulps for one exp instead of an exp and a pow.
 inline double t_osz(double x) {
     if (x > 0.0) {
         const double t = std::log(x) / 0.1;
-        return std::pow(std::exp(t + 0.49 * (std::sin(t) + std::sin(0.79 * t))), 0.1);
+        return x * std::exp(0.049 * (std::sin(t) + std::sin(0.79 * t)));
     }
     if (x < 0.0) {
         const double t = std::log(-x) / 0.1;
-        return -std::pow(std::exp(t + 0.49 * (std::sin(0.55 * t) + std::sin(0.31 * t))), 0.1);
+        return x * std::exp(0.049 * (std::sin(0.55 * t) + std::sin(0.31 * t)));
     }
     return 0.0;
 }

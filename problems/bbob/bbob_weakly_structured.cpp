@@ -164,7 +164,7 @@ public:
         for (Eigen::Index i = 0; i < n; ++i) {
             double sum = 0.0;
             for (int j = 1; j < 33; ++j) {
-                const double p = std::pow(2.0, static_cast<double>(j));
+                const double p = std::ldexp(1.0, j); // 2^j exactly
                 sum += std::fabs(p * z[i] - round_half_up(p * z[i])) / p;
             }
             product *= 1.0 + (static_cast<double>(i) + 1.0) * sum;
