@@ -1,5 +1,7 @@
 #include "problems/bbob/bbob_function.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -31,6 +33,12 @@ std::unique_ptr<Function> make_function(int function, Eigen::Index dimension, st
     if (function <= 19)
         return make_multimodal(setup);
     return make_weakly_structured(setup);
+}
+
+ScaledRotationFrame scaled_rotation_frame(std::int64_t rseed, Eigen::Index dimension) {
+    const double factor = std::max(1.0, std::sqrt(static_cast<double>(dimension)) / 8.0);
+    const Eigen::MatrixXd r = legacy_rotation(rseed, dimension);
+    return {factor * r, r.transpose() * Eigen::VectorXd::Ones(dimension) / (2.0 * factor)};
 }
 
 Eigen::MatrixXd rotate_scale_rotate(const Eigen::MatrixXd& r, const Eigen::VectorXd& scales, const Eigen::MatrixXd& q) {

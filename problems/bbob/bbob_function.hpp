@@ -41,6 +41,14 @@ std::unique_ptr<Function> make_ill_conditioned(const InstanceSetup& setup);
 std::unique_ptr<Function> make_multimodal(const InstanceSetup& setup);
 std::unique_ptr<Function> make_weakly_structured(const InstanceSetup& setup);
 
+// The frame of f9 and f19: z = M x + 1/2 with M = max(1, sqrt(D)/8) R (R drawn from rseed), whose
+// optimum z = 1 is at x = R^T 1 / (2 max(1, sqrt(D)/8)).
+struct ScaledRotationFrame {
+    Eigen::MatrixXd m;
+    Eigen::VectorXd x_opt;
+};
+ScaledRotationFrame scaled_rotation_frame(std::int64_t rseed, Eigen::Index dimension);
+
 // R diag(scales) Q, the product that many functions apply after the shift, computed once.
 Eigen::MatrixXd rotate_scale_rotate(const Eigen::MatrixXd& r, const Eigen::VectorXd& scales,
                                     const Eigen::MatrixXd& q);

@@ -117,14 +117,10 @@ private:
 // z = max(1, sqrt(D)/8) R x + 1/2; the optimum is R^T 1 / (2 max(1, sqrt(D)/8)).
 class GriewankRosenbrock final : public Function {
 public:
-    explicit GriewankRosenbrock(const InstanceSetup& s) : fopt_(s.f_opt) {
-        const double factor = std::max(1.0, std::sqrt(static_cast<double>(s.dimension)) / 8.0);
-        const Eigen::MatrixXd r = legacy_rotation(s.rseed, s.dimension);
-        m_ = factor * r;
-        xopt_ = r.transpose() * Eigen::VectorXd::Ones(s.dimension) / (2.0 * factor);
-    }
+    explicit GriewankRosenbrock(const InstanceSetup& s)
+        : frame_(scaled_rotation_frame(s.rseed, s.dimension)), fopt_(s.f_opt) {}
     double value(const Eigen::VectorXd& x) const override {
-        SmallVector z = m_ * x;
+        SmallVector z = frame_.m * x;
         z.array() += 0.5;
         double sum = 0.0;
         for (Eigen::Index i = 0; i + 1 < z.size(); ++i) {
@@ -135,11 +131,10 @@ public:
         }
         return 10.0 + 10.0 * sum / static_cast<double>(z.size() - 1) + fopt_;
     }
-    Eigen::VectorXd x_opt() const override { return xopt_; }
+    Eigen::VectorXd x_opt() const override { return frame_.x_opt; }
 
 private:
-    Eigen::MatrixXd m_;
-    Eigen::VectorXd xopt_;
+    ScaledRotationFrame frame_;
     double fopt_;
 };
 

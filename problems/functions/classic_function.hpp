@@ -4,6 +4,7 @@
 // shifted and shifted+rotated variants (see instance_transform.hpp).
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <span>
 #include <string>
@@ -45,5 +46,11 @@ const std::vector<ClassicFunction>& classic_functions();
 // Their family names in the same order, e.g. for a study over the whole classic set (the
 // centre-bias preset runs each one unshifted and shifted).
 std::vector<std::string> classic_function_names();
+
+// The problems of the centre-bias study: each classic function in `dimension` dimensions as it is
+// (optimum at the centre or at a fixed point such as (1, ..., 1)) and shifted (optimum drawn from
+// `instance`), as specs: "rastrigin:dim=30", "rastrigin:dim=30,instance=1,shift=on", ... Run with the
+// same seeds, the gap between the two shows how much an algorithm owes to the optimum's position.
+std::vector<std::string> centre_bias_problem_specs(Eigen::Index dimension, std::int64_t instance = 1);
 
 } // namespace mhb

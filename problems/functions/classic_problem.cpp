@@ -152,6 +152,16 @@ std::vector<std::string> classic_function_names() {
     return names;
 }
 
+std::vector<std::string> centre_bias_problem_specs(Eigen::Index dimension, std::int64_t instance) {
+    std::vector<std::string> specs;
+    for (const auto& name : classic_function_names()) {
+        const std::string plain = name + ":dim=" + std::to_string(dimension);
+        specs.push_back(plain);
+        specs.push_back(plain + ",instance=" + std::to_string(instance) + ",shift=on");
+    }
+    return specs;
+}
+
 void register_classic_functions(ProblemRegistry& registry) {
     for (const ClassicFunction& f : classic_functions()) {
         registry.add({f.name, f.summary, f.reference, classic_parameters(f),
