@@ -107,8 +107,9 @@ private:
     double fopt_;
 };
 
-// f5: sum 5 |s_i| - s_i x_i, s_i = sign(x_opt_i) 10^((i-1)/(D-1)); the optimum is the corner
-// 5 sign(x_opt) of the box.
+// f5: sum 5 |s_i| - s_i z_i, s_i = sign(x_opt_i) 10^((i-1)/(D-1)), z_i = x_i inside the corner's
+// half-space (x_i x*_i < 5^2) and x*_i beyond it, so nothing beats the optimum, the corner
+// x* = 5 sign(x_opt) of the box.
 class LinearSlope final : public Function {
 public:
     explicit LinearSlope(const InstanceSetup& s) : slopes_(s.dimension), corner_(s.dimension), fopt_(s.f_opt) {
@@ -122,8 +123,10 @@ public:
     }
     double value(const Eigen::VectorXd& x) const override {
         double result = 0.0;
-        for (Eigen::Index i = 0; i < x.size(); ++i)
-            result += 5.0 * std::fabs(slopes_[i]) - slopes_[i] * x[i];
+        for (Eigen::Index i = 0; i < x.size(); ++i) {
+            const double z = x[i] * corner_[i] < 25.0 ? x[i] : corner_[i];
+            result += 5.0 * std::fabs(slopes_[i]) - slopes_[i] * z;
+        }
         return result + fopt_;
     }
     Eigen::VectorXd x_opt() const override { return corner_; }
