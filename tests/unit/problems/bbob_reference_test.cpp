@@ -55,12 +55,13 @@ TEST(BbobReference, EveryFunctionMatchesCocoValues) {
     EXPECT_EQ(expect_matches("bbob_public_sample.csv", true).size(), 24u);
 }
 
-// tests/data/bbob_coco_regression_sample.csv: 67 entries of COCO's own regression-test data
+// tests/data/bbob_coco_regression_sample.csv: 71 entries of COCO's own regression-test data
 // (numbbo/coco, code-experiments/test/regression-test/data/regression_test_2data_for_suite_bbob.py,
-// made by create_suite_data.py with cocoex), covering all 24 functions in dimensions 2, 3, 5 and
-// 10, instances 1-5 and 51-60, with points inside and far outside [-5, 5]^D. That file keys each
-// entry by the problem's position in the suite (dimension, then function, then instance, over
-// COCO's 2016 instance list 1-5, 51-60); the position was decoded into function, dimension and
+// made by create_suite_data.py with cocoex), covering all 24 functions in dimensions 2, 3, 5, 10,
+// 20 and 40, instances 1-5 and 51-60, with points inside and far outside [-5, 5]^D. That file keys
+// each entry by the problem's position in the suite (kept as the point id, coco<position>):
+// position = instance index + 15 (function - 1) + 360 dimension index, over COCO's 2016 instance
+// list 1-5, 51-60 and dimensions 2, 3, 5, 10, 20, 40; it was decoded into function, dimension and
 // instance when the extract was made.
 TEST(BbobReference, MatchesCocosRegressionDataAcrossDimensionsAndInstances) {
     EXPECT_EQ(expect_matches("bbob_coco_regression_sample.csv", false).size(), 24u);
