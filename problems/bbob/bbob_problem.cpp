@@ -38,21 +38,22 @@ private:
     KnownOptimum optimum_;
 };
 
-std::string bbob_summary() {
-    std::string s = "COCO's noiseless BBOB suite, exact to COCO, on [-5, 5]^dim, f* and x* known:";
+std::string function_help() {
+    std::string s = "function number:";
     for (int f = 0; f < 24; ++f)
-        s += std::string(f == 0 ? " " : ", ") + "f" + std::to_string(f + 1) + " " + bbob_names[f];
-    return s;
+        s.append(f == 0 ? " " : ", ").append(std::to_string(f + 1)).append(" ").append(bbob_names[f]);
+    return s + "; a range such as 1-24 expands";
 }
 
 } // namespace
 
 void register_bbob(ProblemRegistry& registry) {
     registry.add({"bbob",
-                  bbob_summary(),
+                  "COCO's noiseless BBOB suite, 24 functions exact to COCO, by instance number, on [-5, 5]^dim; "
+                  "f* and x* known",
                   "Hansen, Finck, Ros, Auger (2009), Real-parameter black-box optimization benchmarking 2009: "
                   "noiseless functions definitions, INRIA RR-6829; instances as in COCO (numbbo/coco)",
-                  {ParameterInfo::integer("f", 1, 1, 24, "function number 1-24; a range such as 1-24 expands").ranged(),
+                  {ParameterInfo::integer("f", 1, 1, 24, function_help()).ranged(),
                    ParameterInfo::integer("dim", 10, 2, bbob::max_dimension, "dimension (COCO's 2, 3, 5, 10, 20, 40 and "
                                                                               "any other from 2 to 40)"),
                    ParameterInfo::integer("instance", 1, 1, 100000,
