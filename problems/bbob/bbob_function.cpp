@@ -1,18 +1,19 @@
 #include "problems/bbob/bbob_function.hpp"
 
+#include "problems/bbob/bbob_random.hpp"
+#include "problems/bbob/bbob_transforms.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "problems/bbob/bbob_random.hpp"
-#include "problems/bbob/bbob_transforms.hpp"
-
 namespace mhb::bbob {
 
 std::unique_ptr<Function> make_function(int function, Eigen::Index dimension, std::int64_t instance) {
     if (function < 1 || function > 24)
-        throw std::invalid_argument("bbob: function f" + std::to_string(function) + " does not exist; f is 1-24");
+        throw std::invalid_argument("bbob: function f" + std::to_string(function) +
+                                    " does not exist; f is 1-24");
     if (dimension < 2 || dimension > max_dimension)
         throw std::invalid_argument("bbob: dimension " + std::to_string(dimension) + " is outside [2, " +
                                     std::to_string(max_dimension) + "]");
@@ -41,7 +42,8 @@ ScaledRotationFrame scaled_rotation_frame(std::int64_t rseed, Eigen::Index dimen
     return {factor * r, r.transpose() * Eigen::VectorXd::Ones(dimension) / (2.0 * factor)};
 }
 
-Eigen::MatrixXd rotate_scale_rotate(const Eigen::MatrixXd& r, const Eigen::VectorXd& scales, const Eigen::MatrixXd& q) {
+Eigen::MatrixXd rotate_scale_rotate(const Eigen::MatrixXd& r, const Eigen::VectorXd& scales,
+                                    const Eigen::MatrixXd& q) {
     // Summed in the legacy order (k innermost, left to right) so that the product matches COCO's.
     const Eigen::Index n = r.rows();
     Eigen::MatrixXd m(n, n);

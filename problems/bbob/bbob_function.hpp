@@ -6,10 +6,9 @@
 // bbob_multimodal.cpp (f15-f19), bbob_weakly_structured.cpp (f20-f24).
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <memory>
-
-#include <Eigen/Core>
 
 namespace mhb::bbob {
 

@@ -1,13 +1,13 @@
 // BBOB functions with high conditioning f10-f14: ellipsoid, discus, bent cigar, sharp ridge,
 // different powers (all rotated). Definitions: Hansen et al. (2009), checked against COCO's
 // f_ellipsoid.c, f_discus.c, f_bent_cigar.c, f_sharp_ridge.c and f_different_powers.c.
-#include <cmath>
-#include <stdexcept>
-#include <string>
-
 #include "problems/bbob/bbob_function.hpp"
 #include "problems/bbob/bbob_random.hpp"
 #include "problems/bbob/bbob_transforms.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace mhb::bbob {
 namespace {
@@ -36,7 +36,8 @@ private:
 Eigen::VectorXd power_weights(double base, double exponent_scale, Eigen::Index dimension) {
     Eigen::VectorXd w(dimension);
     for (Eigen::Index i = 0; i < dimension; ++i)
-        w[i] = std::pow(base, exponent_scale * static_cast<double>(i) / (static_cast<double>(dimension) - 1.0));
+        w[i] =
+            std::pow(base, exponent_scale * static_cast<double>(i) / (static_cast<double>(dimension) - 1.0));
     return w;
 }
 
@@ -44,7 +45,8 @@ Eigen::VectorXd power_weights(double base, double exponent_scale, Eigen::Index d
 class Ellipsoid final : public RotatedFunction {
 public:
     explicit Ellipsoid(const InstanceSetup& s)
-        : RotatedFunction(legacy_xopt(s.rseed, s.dimension), legacy_rotation(s.rseed + 1000000, s.dimension), s.f_opt),
+        : RotatedFunction(legacy_xopt(s.rseed, s.dimension), legacy_rotation(s.rseed + 1000000, s.dimension),
+                          s.f_opt),
           weights_(power_weights(1.0e6, 1.0, s.dimension)) {}
 
 private:
@@ -59,7 +61,8 @@ private:
 class Discus final : public RotatedFunction {
 public:
     explicit Discus(const InstanceSetup& s)
-        : RotatedFunction(legacy_xopt(s.rseed, s.dimension), legacy_rotation(s.rseed + 1000000, s.dimension), s.f_opt) {}
+        : RotatedFunction(legacy_xopt(s.rseed, s.dimension), legacy_rotation(s.rseed + 1000000, s.dimension),
+                          s.f_opt) {}
 
 private:
     double core(SmallVector& z) const override {
@@ -73,8 +76,8 @@ private:
 class BentCigar final : public RotatedFunction {
 public:
     explicit BentCigar(const InstanceSetup& s)
-        : RotatedFunction(legacy_xopt(s.rseed + 1000000, s.dimension), legacy_rotation(s.rseed + 1000000, s.dimension),
-                          s.f_opt),
+        : RotatedFunction(legacy_xopt(s.rseed + 1000000, s.dimension),
+                          legacy_rotation(s.rseed + 1000000, s.dimension), s.f_opt),
           r_(legacy_rotation(s.rseed + 1000000, s.dimension)) {}
 
 private:
@@ -92,7 +95,8 @@ public:
     explicit SharpRidge(const InstanceSetup& s)
         : RotatedFunction(legacy_xopt(s.rseed, s.dimension),
                           rotate_scale_rotate(legacy_rotation(s.rseed + 1000000, s.dimension),
-                                              sqrt_power_diagonal(10.0, s.dimension), legacy_rotation(s.rseed, s.dimension)),
+                                              sqrt_power_diagonal(10.0, s.dimension),
+                                              legacy_rotation(s.rseed, s.dimension)),
                           s.f_opt) {}
 
 private:
@@ -105,7 +109,8 @@ private:
 class DifferentPowers final : public RotatedFunction {
 public:
     explicit DifferentPowers(const InstanceSetup& s)
-        : RotatedFunction(legacy_xopt(s.rseed, s.dimension), legacy_rotation(s.rseed + 1000000, s.dimension), s.f_opt),
+        : RotatedFunction(legacy_xopt(s.rseed, s.dimension), legacy_rotation(s.rseed + 1000000, s.dimension),
+                          s.f_opt),
           exponents_(s.dimension) {
         for (Eigen::Index i = 0; i < s.dimension; ++i)
             exponents_[i] = 2.0 + (4.0 * static_cast<double>(i)) / (static_cast<double>(s.dimension) - 1.0);
@@ -125,12 +130,18 @@ private:
 
 std::unique_ptr<Function> make_ill_conditioned(const InstanceSetup& s) {
     switch (s.function) {
-    case 10: return std::make_unique<Ellipsoid>(s);
-    case 11: return std::make_unique<Discus>(s);
-    case 12: return std::make_unique<BentCigar>(s);
-    case 13: return std::make_unique<SharpRidge>(s);
-    case 14: return std::make_unique<DifferentPowers>(s);
-    default: throw std::logic_error("make_ill_conditioned: f" + std::to_string(s.function) + " is not in f10-f14");
+    case 10:
+        return std::make_unique<Ellipsoid>(s);
+    case 11:
+        return std::make_unique<Discus>(s);
+    case 12:
+        return std::make_unique<BentCigar>(s);
+    case 13:
+        return std::make_unique<SharpRidge>(s);
+    case 14:
+        return std::make_unique<DifferentPowers>(s);
+    default:
+        throw std::logic_error("make_ill_conditioned: f" + std::to_string(s.function) + " is not in f10-f14");
     }
 }
 

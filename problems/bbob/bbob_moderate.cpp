@@ -1,14 +1,14 @@
 // BBOB functions with low or moderate conditioning f6-f9: attractive sector, step ellipsoid,
 // Rosenbrock (original and rotated). Definitions: Hansen et al. (2009), checked against COCO's
 // f_attractive_sector.c, f_step_ellipsoid.c and f_rosenbrock.c.
+#include "problems/bbob/bbob_function.hpp"
+#include "problems/bbob/bbob_random.hpp"
+#include "problems/bbob/bbob_transforms.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
-
-#include "problems/bbob/bbob_function.hpp"
-#include "problems/bbob/bbob_random.hpp"
-#include "problems/bbob/bbob_transforms.hpp"
 
 namespace mhb::bbob {
 namespace {
@@ -31,7 +31,8 @@ class AttractiveSector final : public Function {
 public:
     explicit AttractiveSector(const InstanceSetup& s)
         : xopt_(legacy_xopt(s.rseed, s.dimension)),
-          m_(rotate_scale_rotate(legacy_rotation(s.rseed + 1000000, s.dimension), sqrt_power_diagonal(10.0, s.dimension),
+          m_(rotate_scale_rotate(legacy_rotation(s.rseed + 1000000, s.dimension),
+                                 sqrt_power_diagonal(10.0, s.dimension),
                                  legacy_rotation(s.rseed, s.dimension))),
           fopt_(s.f_opt) {}
     double value(const Eigen::VectorXd& x) const override {
@@ -67,7 +68,8 @@ public:
         SmallVector z_hat = scaled_r_ * (x - xopt_);
         const double first = z_hat[0];
         for (Eigen::Index i = 0; i < z_hat.size(); ++i)
-            z_hat[i] = std::fabs(z_hat[i]) > 0.5 ? round_half_up(z_hat[i]) : round_half_up(10.0 * z_hat[i]) / 10.0;
+            z_hat[i] =
+                std::fabs(z_hat[i]) > 0.5 ? round_half_up(z_hat[i]) : round_half_up(10.0 * z_hat[i]) / 10.0;
         const SmallVector z = q_ * z_hat;
         const double core = weights_.dot(z.cwiseAbs2());
         return 0.1 * std::max(std::fabs(first) * 1.0e-4, core) + f_pen(x) + fopt_;
@@ -122,11 +124,16 @@ private:
 
 std::unique_ptr<Function> make_moderate(const InstanceSetup& s) {
     switch (s.function) {
-    case 6: return std::make_unique<AttractiveSector>(s);
-    case 7: return std::make_unique<StepEllipsoid>(s);
-    case 8: return std::make_unique<Rosenbrock>(s);
-    case 9: return std::make_unique<RosenbrockRotated>(s);
-    default: throw std::logic_error("make_moderate: f" + std::to_string(s.function) + " is not in f6-f9");
+    case 6:
+        return std::make_unique<AttractiveSector>(s);
+    case 7:
+        return std::make_unique<StepEllipsoid>(s);
+    case 8:
+        return std::make_unique<Rosenbrock>(s);
+    case 9:
+        return std::make_unique<RosenbrockRotated>(s);
+    default:
+        throw std::logic_error("make_moderate: f" + std::to_string(s.function) + " is not in f6-f9");
     }
 }
 

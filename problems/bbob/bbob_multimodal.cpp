@@ -2,16 +2,16 @@
 // Weierstrass, Schaffers F7 (condition 10 and 1000), composite Griewank-Rosenbrock F8F2.
 // Definitions: Hansen et al. (2009), checked against COCO's f_rastrigin.c, f_weierstrass.c,
 // f_schaffers.c and f_griewank_rosenbrock.c.
+#include "problems/bbob/bbob_function.hpp"
+#include "problems/bbob/bbob_random.hpp"
+#include "problems/bbob/bbob_transforms.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
-
-#include "problems/bbob/bbob_function.hpp"
-#include "problems/bbob/bbob_random.hpp"
-#include "problems/bbob/bbob_transforms.hpp"
 
 namespace mhb::bbob {
 namespace {
@@ -21,7 +21,8 @@ class RastriginRotated final : public Function {
 public:
     explicit RastriginRotated(const InstanceSetup& s)
         : xopt_(legacy_xopt(s.rseed, s.dimension)), r_(legacy_rotation(s.rseed + 1000000, s.dimension)),
-          m_(rotate_scale_rotate(r_, sqrt_power_diagonal(10.0, s.dimension), legacy_rotation(s.rseed, s.dimension))),
+          m_(rotate_scale_rotate(r_, sqrt_power_diagonal(10.0, s.dimension),
+                                 legacy_rotation(s.rseed, s.dimension))),
           fopt_(s.f_opt) {}
     double value(const Eigen::VectorXd& x) const override {
         SmallVector y = r_ * (x - xopt_);
@@ -48,7 +49,8 @@ class Weierstrass final : public Function {
 public:
     explicit Weierstrass(const InstanceSetup& s)
         : xopt_(legacy_xopt(s.rseed, s.dimension)), r_(legacy_rotation(s.rseed + 1000000, s.dimension)),
-          m_(rotate_scale_rotate(r_, sqrt_power_diagonal(1.0 / 100.0, s.dimension), legacy_rotation(s.rseed, s.dimension))),
+          m_(rotate_scale_rotate(r_, sqrt_power_diagonal(1.0 / 100.0, s.dimension),
+                                 legacy_rotation(s.rseed, s.dimension))),
           fopt_(s.f_opt) {
         for (std::size_t k = 0; k < terms; ++k) {
             a_[k] = std::pow(0.5, static_cast<double>(k));
@@ -142,12 +144,18 @@ private:
 
 std::unique_ptr<Function> make_multimodal(const InstanceSetup& s) {
     switch (s.function) {
-    case 15: return std::make_unique<RastriginRotated>(s);
-    case 16: return std::make_unique<Weierstrass>(s);
-    case 17: return std::make_unique<Schaffers>(s, 10.0);
-    case 18: return std::make_unique<Schaffers>(s, 1000.0);
-    case 19: return std::make_unique<GriewankRosenbrock>(s);
-    default: throw std::logic_error("make_multimodal: f" + std::to_string(s.function) + " is not in f15-f19");
+    case 15:
+        return std::make_unique<RastriginRotated>(s);
+    case 16:
+        return std::make_unique<Weierstrass>(s);
+    case 17:
+        return std::make_unique<Schaffers>(s, 10.0);
+    case 18:
+        return std::make_unique<Schaffers>(s, 1000.0);
+    case 19:
+        return std::make_unique<GriewankRosenbrock>(s);
+    default:
+        throw std::logic_error("make_multimodal: f" + std::to_string(s.function) + " is not in f15-f19");
     }
 }
 

@@ -9,10 +9,9 @@
 // suite_bbob.c; written anew here.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace mhb::bbob {
 

@@ -1,14 +1,14 @@
 // BBOB separable functions f1-f5: sphere, ellipsoid, Rastrigin, Bueche-Rastrigin, linear slope.
 // Definitions: Hansen et al. (2009), checked against COCO's f_sphere.c, f_ellipsoid.c,
 // f_rastrigin.c, f_bueche_rastrigin.c and f_linear_slope.c.
+#include "problems/bbob/bbob_function.hpp"
+#include "problems/bbob/bbob_random.hpp"
+#include "problems/bbob/bbob_transforms.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
-
-#include "problems/bbob/bbob_function.hpp"
-#include "problems/bbob/bbob_random.hpp"
-#include "problems/bbob/bbob_transforms.hpp"
 
 namespace mhb::bbob {
 namespace {
@@ -60,7 +60,8 @@ private:
 class Rastrigin final : public Function {
 public:
     explicit Rastrigin(const InstanceSetup& s)
-        : xopt_(legacy_xopt(s.rseed, s.dimension)), scales_(lambda_diagonal(10.0, s.dimension)), fopt_(s.f_opt) {}
+        : xopt_(legacy_xopt(s.rseed, s.dimension)), scales_(lambda_diagonal(10.0, s.dimension)),
+          fopt_(s.f_opt) {}
     double value(const Eigen::VectorXd& x) const override {
         SmallVector z = x - xopt_;
         t_osz(z);
@@ -86,7 +87,8 @@ public:
         for (Eigen::Index i = 0; i < s.dimension; i += 2)
             xopt_[i] = std::fabs(xopt_[i]);
         for (Eigen::Index i = 0; i < s.dimension; ++i)
-            scales_[i] = std::pow(std::sqrt(10.0), static_cast<double>(i) / (static_cast<double>(s.dimension) - 1.0));
+            scales_[i] =
+                std::pow(std::sqrt(10.0), static_cast<double>(i) / (static_cast<double>(s.dimension) - 1.0));
     }
     double value(const Eigen::VectorXd& x) const override {
         SmallVector z = x - xopt_;
@@ -112,7 +114,8 @@ private:
 // x* = 5 sign(x_opt) of the box.
 class LinearSlope final : public Function {
 public:
-    explicit LinearSlope(const InstanceSetup& s) : slopes_(s.dimension), corner_(s.dimension), fopt_(s.f_opt) {
+    explicit LinearSlope(const InstanceSetup& s)
+        : slopes_(s.dimension), corner_(s.dimension), fopt_(s.f_opt) {
         const Eigen::VectorXd xopt = legacy_xopt(s.rseed, s.dimension);
         for (Eigen::Index i = 0; i < s.dimension; ++i) {
             const double magnitude =
@@ -141,12 +144,18 @@ private:
 
 std::unique_ptr<Function> make_separable(const InstanceSetup& s) {
     switch (s.function) {
-    case 1: return std::make_unique<Sphere>(s);
-    case 2: return std::make_unique<Ellipsoid>(s);
-    case 3: return std::make_unique<Rastrigin>(s);
-    case 4: return std::make_unique<BuecheRastrigin>(s);
-    case 5: return std::make_unique<LinearSlope>(s);
-    default: throw std::logic_error("make_separable: f" + std::to_string(s.function) + " is not separable");
+    case 1:
+        return std::make_unique<Sphere>(s);
+    case 2:
+        return std::make_unique<Ellipsoid>(s);
+    case 3:
+        return std::make_unique<Rastrigin>(s);
+    case 4:
+        return std::make_unique<BuecheRastrigin>(s);
+    case 5:
+        return std::make_unique<LinearSlope>(s);
+    default:
+        throw std::logic_error("make_separable: f" + std::to_string(s.function) + " is not separable");
     }
 }
 

@@ -8,9 +8,8 @@
 // the stack (no allocation per evaluation).
 #pragma once
 
-#include <cmath>
-
 #include <Eigen/Core>
+#include <cmath>
 
 namespace mhb::bbob {
 
@@ -66,8 +65,7 @@ inline Eigen::VectorXd sqrt_power_diagonal(double alpha, Eigen::Index dimension)
 }
 
 // sum over i of max(0, |x_i| - 5)^2.
-template <class Vector>
-double f_pen(const Vector& x) {
+template <class Vector> double f_pen(const Vector& x) {
     double penalty = 0.0;
     for (Eigen::Index i = 0; i < x.size(); ++i) {
         const double excess = std::fabs(x[i]) - 5.0;
@@ -78,6 +76,8 @@ double f_pen(const Vector& x) {
 }
 
 // COCO's rounding: floor(x + 0.5).
-inline double round_half_up(double x) { return std::floor(x + 0.5); }
+inline double round_half_up(double x) {
+    return std::floor(x + 0.5);
+}
 
 } // namespace mhb::bbob

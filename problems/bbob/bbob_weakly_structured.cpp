@@ -3,16 +3,16 @@
 // Definitions: Hansen et al. (2009), checked against COCO's f_schwefel.c (with
 // transform_vars_x_hat.c and transform_vars_z_hat.c), f_gallagher.c, f_katsuura.c and
 // f_lunacek_bi_rastrigin.c.
+#include "problems/bbob/bbob_function.hpp"
+#include "problems/bbob/bbob_random.hpp"
+#include "problems/bbob/bbob_transforms.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include "problems/bbob/bbob_function.hpp"
-#include "problems/bbob/bbob_random.hpp"
-#include "problems/bbob/bbob_transforms.hpp"
 
 namespace mhb::bbob {
 namespace {
@@ -23,7 +23,8 @@ namespace {
 class Schwefel final : public Function {
 public:
     explicit Schwefel(const InstanceSetup& s)
-        : signs_(s.dimension), xopt_(s.dimension), scales_(lambda_diagonal(10.0, s.dimension)), fopt_(s.f_opt) {
+        : signs_(s.dimension), xopt_(s.dimension), scales_(lambda_diagonal(10.0, s.dimension)),
+          fopt_(s.f_opt) {
         const std::vector<double> u = legacy_uniform(static_cast<std::size_t>(s.dimension), s.rseed);
         for (Eigen::Index i = 0; i < s.dimension; ++i) {
             signs_[i] = u[static_cast<std::size_t>(i)] - 0.5 < 0.0 ? -1.0 : 1.0;
@@ -69,7 +70,8 @@ std::vector<std::size_t> ranks_by_value(const std::vector<double>& values, std::
     std::vector<std::size_t> order(n);
     for (std::size_t i = 0; i < n; ++i)
         order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
     return order; // order[j] = index of the j-th smallest value
 }
 
@@ -94,7 +96,8 @@ public:
         weights_.resize(static_cast<Eigen::Index>(peaks));
         weights_[0] = 10.0;
         for (std::size_t i = 1; i < peaks; ++i) {
-            condition[i] = std::pow(max_condition, static_cast<double>(perm[i - 1]) / static_cast<double>(peaks - 2));
+            condition[i] =
+                std::pow(max_condition, static_cast<double>(perm[i - 1]) / static_cast<double>(peaks - 2));
             weights_[static_cast<Eigen::Index>(i)] =
                 static_cast<double>(i - 1) / static_cast<double>(peaks - 2) * (9.1 - 1.1) + 1.1;
         }
@@ -154,7 +157,8 @@ class Katsuura final : public Function {
 public:
     explicit Katsuura(const InstanceSetup& s)
         : xopt_(legacy_xopt(s.rseed, s.dimension)),
-          m_(rotate_scale_rotate(legacy_rotation(s.rseed + 1000000, s.dimension), sqrt_power_diagonal(100.0, s.dimension),
+          m_(rotate_scale_rotate(legacy_rotation(s.rseed + 1000000, s.dimension),
+                                 sqrt_power_diagonal(100.0, s.dimension),
                                  legacy_rotation(s.rseed, s.dimension))),
           fopt_(s.f_opt) {}
     double value(const Eigen::VectorXd& x) const override {
@@ -192,7 +196,8 @@ public:
         for (Eigen::Index i = 0; i < s.dimension; ++i)
             xopt_[i] = g[static_cast<std::size_t>(i)] < 0.0 ? -0.5 * mu0 : 0.5 * mu0;
         for (Eigen::Index i = 0; i < s.dimension; ++i)
-            scaled_r_.row(i) *= std::pow(std::sqrt(100.0), static_cast<double>(i) / static_cast<double>(s.dimension - 1));
+            scaled_r_.row(i) *=
+                std::pow(std::sqrt(100.0), static_cast<double>(i) / static_cast<double>(s.dimension - 1));
         s_ = 1.0 - 0.5 / (std::sqrt(static_cast<double>(s.dimension + 20)) - 4.1);
         mu1_ = -std::sqrt((mu0 * mu0 - 1.0) / s_);
     }
@@ -230,12 +235,19 @@ private:
 
 std::unique_ptr<Function> make_weakly_structured(const InstanceSetup& s) {
     switch (s.function) {
-    case 20: return std::make_unique<Schwefel>(s);
-    case 21: return std::make_unique<Gallagher>(s, 101);
-    case 22: return std::make_unique<Gallagher>(s, 21);
-    case 23: return std::make_unique<Katsuura>(s);
-    case 24: return std::make_unique<LunacekBiRastrigin>(s);
-    default: throw std::logic_error("make_weakly_structured: f" + std::to_string(s.function) + " is not in f20-f24");
+    case 20:
+        return std::make_unique<Schwefel>(s);
+    case 21:
+        return std::make_unique<Gallagher>(s, 101);
+    case 22:
+        return std::make_unique<Gallagher>(s, 21);
+    case 23:
+        return std::make_unique<Katsuura>(s);
+    case 24:
+        return std::make_unique<LunacekBiRastrigin>(s);
+    default:
+        throw std::logic_error("make_weakly_structured: f" + std::to_string(s.function) +
+                               " is not in f20-f24");
     }
 }
 

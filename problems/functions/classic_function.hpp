@@ -4,13 +4,12 @@
 // shifted and shifted+rotated variants (see instance_transform.hpp).
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <functional>
 #include <span>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace mhb {
 
@@ -19,8 +18,7 @@ namespace mhb {
 using ClassicEvaluator = std::function<double(std::span<const double> z)>;
 
 // The binder of a function that needs no per-dimension constants.
-template <double (*F)(std::span<const double>)>
-ClassicEvaluator stateless(Eigen::Index) {
+template <double (*F)(std::span<const double>)> ClassicEvaluator stateless(Eigen::Index) {
     return F;
 }
 
@@ -30,9 +28,9 @@ struct ClassicFunction {
     std::string reference; // where it is defined
     double lower = -100.0; // the usual box, [lower, upper]^D
     double upper = 100.0;
-    double optimum = 0.0;  // x* = (optimum, ..., optimum) in the function's own coordinates
+    double optimum = 0.0; // x* = (optimum, ..., optimum) in the function's own coordinates
     Eigen::Index min_dimension = 1;
-    bool noisy = false;    // adds deterministic uniform noise (the quartic function)
+    bool noisy = false; // adds deterministic uniform noise (the quartic function)
     ClassicEvaluator (*bind)(Eigen::Index dimension) = nullptr;
 };
 

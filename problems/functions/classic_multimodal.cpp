@@ -1,10 +1,10 @@
 // The multimodal classic functions. Formulas and usual boxes as in Yao, Liu and Lin (1999),
 // "Evolutionary programming made faster", IEEE TEVC 3(2), table I (f8-f13), unless named otherwise.
+#include "problems/functions/classic_function.hpp"
+
 #include <array>
 #include <cmath>
 #include <numbers>
-
-#include "problems/functions/classic_function.hpp"
 
 namespace mhb {
 namespace {
@@ -162,33 +162,41 @@ double penalized_2(std::span<const double> z) {
 
 std::vector<ClassicFunction> classic_multimodal_functions() {
     std::vector<ClassicFunction> list;
-    list.push_back({"rastrigin", "10 D + sum z_i^2 - 10 cos(2 pi z_i); separable, ~10^D local minima, f* = 0 at 0",
-                    "Rastrigin (1974); Yao, Liu, Lin (1999) f9", -5.12, 5.12, 0, 1, false, stateless<rastrigin>});
-    list.push_back({"ackley",
-                    "-20 exp(-0.2 sqrt(mean z_i^2)) - exp(mean cos(2 pi z_i)) + 20 + e; multimodal, f* = 0 at 0",
-                    "Ackley (1987); Yao, Liu, Lin (1999) f10", -32, 32, 0, 1, false, stateless<ackley>});
+    list.push_back(
+        {"rastrigin", "10 D + sum z_i^2 - 10 cos(2 pi z_i); separable, ~10^D local minima, f* = 0 at 0",
+         "Rastrigin (1974); Yao, Liu, Lin (1999) f9", -5.12, 5.12, 0, 1, false, stateless<rastrigin>});
+    list.push_back(
+        {"ackley",
+         "-20 exp(-0.2 sqrt(mean z_i^2)) - exp(mean cos(2 pi z_i)) + 20 + e; multimodal, f* = 0 at 0",
+         "Ackley (1987); Yao, Liu, Lin (1999) f10", -32, 32, 0, 1, false, stateless<ackley>});
     list.push_back({"griewank", "1 + sum z_i^2 / 4000 - prod cos(z_i / sqrt(i)); multimodal, f* = 0 at 0",
-                    "Griewank (1981); Yao, Liu, Lin (1999) f11", -600, 600, 0, 1, false, stateless<griewank>});
+                    "Griewank (1981); Yao, Liu, Lin (1999) f11", -600, 600, 0, 1, false,
+                    stateless<griewank>});
     list.push_back({"schwefel_2_26",
                     "sum 418.98288727 - z_i sin(sqrt|z_i|) (CEC 2014 folding beyond +-500); deceptive, "
                     "f* = 0 at (420.96874636, ...)",
-                    "Schwefel (1981); Yao, Liu, Lin (1999) f8, shifted to f* = 0; folding from Liang, Qu, Suganthan (2013)",
+                    "Schwefel (1981); Yao, Liu, Lin (1999) f8, shifted to f* = 0; folding from Liang, Qu, "
+                    "Suganthan (2013)",
                     -500, 500, schwefel_argmax, 1, false, stateless<schwefel_2_26>});
-    list.push_back({"levy",
-                    "sin^2(pi w_1) + sum (w_i - 1)^2 (1 + 10 sin^2(pi w_i + 1)) + (w_D - 1)^2 (1 + sin^2(2 pi w_D)), "
-                    "w = 1 + (z - 1)/4; f* = 0 at (1, ..., 1)",
-                    "Levy and Montalvo (1985); as in Surjanovic and Bingham's library", -10, 10, 1, 1, false, stateless<levy>});
+    list.push_back(
+        {"levy",
+         "sin^2(pi w_1) + sum (w_i - 1)^2 (1 + 10 sin^2(pi w_i + 1)) + (w_D - 1)^2 (1 + sin^2(2 pi w_D)), "
+         "w = 1 + (z - 1)/4; f* = 0 at (1, ..., 1)",
+         "Levy and Montalvo (1985); as in Surjanovic and Bingham's library", -10, 10, 1, 1, false,
+         stateless<levy>});
     list.push_back({"weierstrass",
                     "sum_i sum_{k=0}^{20} 0.5^k cos(2 pi 3^k (z_i + 0.5)) - D sum_k 0.5^k cos(pi 3^k); "
                     "continuous, nowhere differentiable, f* = 0 at 0",
-                    "Suganthan et al. (2005), CEC 2005 definitions F11", -0.5, 0.5, 0, 1, false, stateless<weierstrass>});
+                    "Suganthan et al. (2005), CEC 2005 definitions F11", -0.5, 0.5, 0, 1, false,
+                    stateless<weierstrass>});
     list.push_back({"penalized_1",
                     "pi/D (10 sin^2(pi y_1) + sum (y_i - 1)^2 (1 + 10 sin^2(pi y_{i+1})) + (y_D - 1)^2) "
                     "+ sum u(z_i, 10, 100, 4), y = 1 + (z + 1)/4; f* = 0 at (-1, ..., -1)",
                     "Yao, Liu, Lin (1999) f12 (generalised penalised function 1)", -50, 50, -1, 1, false,
                     stateless<penalized_1>});
     list.push_back({"penalized_2",
-                    "0.1 (sin^2(3 pi z_1) + sum (z_i - 1)^2 (1 + sin^2(3 pi z_{i+1})) + (z_D - 1)^2 (1 + sin^2(2 pi z_D))) "
+                    "0.1 (sin^2(3 pi z_1) + sum (z_i - 1)^2 (1 + sin^2(3 pi z_{i+1})) + (z_D - 1)^2 (1 + "
+                    "sin^2(2 pi z_D))) "
                     "+ sum u(z_i, 5, 100, 4); f* = 0 at (1, ..., 1)",
                     "Yao, Liu, Lin (1999) f13 (generalised penalised function 2)", -50, 50, 1, 1, false,
                     stateless<penalized_2>});

@@ -2,15 +2,15 @@
 // each with dim, bound, shift, rotate and instance (and noise for the quartic function), e.g.
 // `rastrigin:dim=30,shift=1,rotate=1,instance=3`. How an instance shifts and rotates is in
 // instance_transform.hpp; everything it draws is computed here once, at construction.
-#include <array>
-#include <stdexcept>
-#include <string>
-#include <vector>
-
 #include "problems/functions/classic_function.hpp"
 #include "problems/functions/instance_transform.hpp"
 #include "problems/parameters.hpp"
 #include "problems/problem_registry.hpp"
+
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace mhb {
 namespace {
@@ -31,8 +31,9 @@ struct ClassicOptions {
 class ClassicProblem final : public Problem {
 public:
     ClassicProblem(const ClassicFunction& function, const ClassicOptions& o)
-        : function_(function), value_(function.bind(o.dimension)),
-          box_{Eigen::VectorXd::Constant(o.dimension, o.lower), Eigen::VectorXd::Constant(o.dimension, o.upper)},
+        : function_(function),
+          value_(function.bind(o.dimension)), box_{Eigen::VectorXd::Constant(o.dimension, o.lower),
+                                                   Eigen::VectorXd::Constant(o.dimension, o.upper)},
           own_optimum_(Eigen::VectorXd::Constant(o.dimension, function.optimum)), optimum_(own_optimum_),
           shifted_(o.shift), rotated_(o.rotate), noise_(o.noise),
           noise_seed_(instance_seed(function.name, "noise", o.instance)) {
@@ -40,12 +41,14 @@ public:
         if (!box_.contains(own_optimum_))
             throw std::invalid_argument(function.name + ": the box [" + format_real(o.lower) + ", " +
                                         format_real(o.upper) + "]^dim excludes the optimum at " +
-                                        format_real(function.optimum) + " in every coordinate; widen 'bound'");
+                                        format_real(function.optimum) +
+                                        " in every coordinate; widen 'bound'");
         if (shifted_)
             optimum_ = draw_shift(function.name, o.instance, box_);
         if (rotated_)
             rotation_ = draw_rotation(function.name, o.instance, o.dimension);
-        f_star_ = value_(std::span<const double>(own_optimum_.data(), static_cast<std::size_t>(own_optimum_.size())));
+        f_star_ = value_(
+            std::span<const double>(own_optimum_.data(), static_cast<std::size_t>(own_optimum_.size())));
     }
 
     std::string name() const override { return function_.name; }
@@ -107,29 +110,33 @@ std::vector<ParameterInfo> classic_parameters(const ClassicFunction& f) {
     // Built by appending: GCC 12's -Wrestrict misfires on `"[" + std::string`.
     std::string usual = "[";
     usual.append(format_real(f.lower)).append(", ").append(format_real(f.upper)).append("]");
-    ParameterInfo bound = ParameterInfo::real("bound", f.upper, 0.0, 1e12,
-                                              "half-width of the box [-bound, bound]^dim; default: the usual box " +
-                                                  usual + "^dim")
-                              .open_below();
+    ParameterInfo bound =
+        ParameterInfo::real("bound", f.upper, 0.0, 1e12,
+                            "half-width of the box [-bound, bound]^dim; default: the usual box " + usual +
+                                "^dim")
+            .open_below();
     if (!symmetric)
         bound.default_value.clear(); // no default: without it the usual (asymmetric) box is used
     std::vector<ParameterInfo> list = {
         ParameterInfo::integer("dim", 10, static_cast<long long>(f.min_dimension), 10000, "dimension"),
         std::move(bound),
-        ParameterInfo::boolean("shift", false,
-                               "move the optimum to a point drawn from the instance, uniform in the central 80% of "
-                               "the box"),
+        ParameterInfo::boolean(
+            "shift", false,
+            "move the optimum to a point drawn from the instance, uniform in the central 80% of "
+            "the box"),
         ParameterInfo::boolean("rotate", false,
                                "turn the coordinates about the optimum by a rotation drawn from the instance "
                                "(dim <= 2000)"),
-        ParameterInfo::integer("instance", 1, 1, 100000,
-                               "which shift, rotation (and noise) to draw; the same number gives the same instance "
-                               "everywhere; a range such as 1-5 expands")
+        ParameterInfo::integer(
+            "instance", 1, 1, 100000,
+            "which shift, rotation (and noise) to draw; the same number gives the same instance "
+            "everywhere; a range such as 1-5 expands")
             .ranged()};
     if (f.noisy)
-        list.push_back(ParameterInfo::real("noise", 1.0, 0.0, 1e12,
-                                           "amplitude of the noise added to f, noise U[0, 1), a deterministic hash "
-                                           "of (instance, x)"));
+        list.push_back(
+            ParameterInfo::real("noise", 1.0, 0.0, 1e12,
+                                "amplitude of the noise added to f, noise U[0, 1), a deterministic hash "
+                                "of (instance, x)"));
     return list;
 }
 
@@ -180,8 +187,8 @@ void register_classic_functions(ProblemRegistry& registry) {
                           o.noise = f.noisy ? p.real("noise") : 0.0;
                           if (o.rotate && o.dimension > max_rotated_dimension)
                               throw std::invalid_argument(f.name + ": parameter 'rotate' needs dim <= " +
-                                                          std::to_string(max_rotated_dimension) + " (dim = " +
-                                                          std::to_string(o.dimension) + ")");
+                                                          std::to_string(max_rotated_dimension) +
+                                                          " (dim = " + std::to_string(o.dimension) + ")");
                           return std::make_unique<ClassicProblem>(f, o);
                       }});
     }

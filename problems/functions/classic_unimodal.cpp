@@ -1,9 +1,9 @@
 // The unimodal classic functions. Formulas and usual boxes as in Yao, Liu and Lin (1999),
 // "Evolutionary programming made faster", IEEE TEVC 3(2), table I (f1-f7), unless named otherwise.
+#include "problems/functions/classic_function.hpp"
+
 #include <algorithm>
 #include <cmath>
-
-#include "problems/functions/classic_function.hpp"
 
 namespace mhb {
 namespace {
@@ -100,27 +100,34 @@ ClassicEvaluator ellipsoid(Eigen::Index dimension) {
 
 std::vector<ClassicFunction> classic_unimodal_functions() {
     std::vector<ClassicFunction> list;
-    list.push_back({"sphere", "sum z_i^2; separable, unimodal, f* = 0 at the origin", "De Jong (1975)", -100, 100, 0, 1,
-                    false, stateless<sphere>});
-    list.push_back({"ellipsoid",
-                    "sum 10^(6 (i-1)/(D-1)) z_i^2; high-conditioned (10^6) elliptic, separable, unimodal, f* = 0 at 0",
-                    "Liang, Qu, Suganthan (2013), CEC 2014 definitions (high conditioned elliptic)", -100, 100, 0, 1, false,
-                    ellipsoid});
+    list.push_back({"sphere", "sum z_i^2; separable, unimodal, f* = 0 at the origin", "De Jong (1975)", -100,
+                    100, 0, 1, false, stateless<sphere>});
+    list.push_back(
+        {"ellipsoid",
+         "sum 10^(6 (i-1)/(D-1)) z_i^2; high-conditioned (10^6) elliptic, separable, unimodal, f* = 0 at 0",
+         "Liang, Qu, Suganthan (2013), CEC 2014 definitions (high conditioned elliptic)", -100, 100, 0, 1,
+         false, ellipsoid});
     list.push_back({"schwefel_1_2", "sum_i (sum_{j<=i} z_j)^2; non-separable, unimodal, f* = 0 at 0",
-                    "Schwefel (1981); Yao, Liu, Lin (1999) f3", -100, 100, 0, 1, false, stateless<schwefel_1_2>});
+                    "Schwefel (1981); Yao, Liu, Lin (1999) f3", -100, 100, 0, 1, false,
+                    stateless<schwefel_1_2>});
     list.push_back({"schwefel_2_21", "max_i |z_i|; non-smooth, unimodal, f* = 0 at 0",
-                    "Schwefel (1981); Yao, Liu, Lin (1999) f4", -100, 100, 0, 1, false, stateless<schwefel_2_21>});
+                    "Schwefel (1981); Yao, Liu, Lin (1999) f4", -100, 100, 0, 1, false,
+                    stateless<schwefel_2_21>});
     list.push_back({"schwefel_2_22", "sum |z_i| + prod |z_i|; non-smooth, unimodal, f* = 0 at 0",
-                    "Schwefel (1981); Yao, Liu, Lin (1999) f2", -10, 10, 0, 1, false, stateless<schwefel_2_22>});
+                    "Schwefel (1981); Yao, Liu, Lin (1999) f2", -10, 10, 0, 1, false,
+                    stateless<schwefel_2_22>});
     list.push_back({"step", "sum floor(z_i + 0.5)^2; plateaus, discontinuous, f* = 0 on [-0.5, 0.5)^D",
                     "De Jong (1975); Yao, Liu, Lin (1999) f6", -100, 100, 0, 1, false, stateless<step>});
-    list.push_back({"quartic",
-                    "sum i z_i^4 + noise U[0, 1); noise a deterministic hash of (instance, x), f* = 0 (noise-free) at 0",
-                    "De Jong (1975); Yao, Liu, Lin (1999) f7", -1.28, 1.28, 0, 1, true, stateless<quartic>});
-    list.push_back({"rosenbrock", "sum 100 (z_{i+1} - z_i^2)^2 + (z_i - 1)^2; curved valley, f* = 0 at (1, ..., 1)",
-                    "Rosenbrock (1960); Yao, Liu, Lin (1999) f5", -30, 30, 1, 2, false, stateless<rosenbrock>});
+    list.push_back(
+        {"quartic",
+         "sum i z_i^4 + noise U[0, 1); noise a deterministic hash of (instance, x), f* = 0 (noise-free) at 0",
+         "De Jong (1975); Yao, Liu, Lin (1999) f7", -1.28, 1.28, 0, 1, true, stateless<quartic>});
+    list.push_back(
+        {"rosenbrock", "sum 100 (z_{i+1} - z_i^2)^2 + (z_i - 1)^2; curved valley, f* = 0 at (1, ..., 1)",
+         "Rosenbrock (1960); Yao, Liu, Lin (1999) f5", -30, 30, 1, 2, false, stateless<rosenbrock>});
     list.push_back({"zakharov", "sum z_i^2 + (sum i z_i / 2)^2 + (sum i z_i / 2)^4; unimodal, f* = 0 at 0",
-                    "Zakharov; box [-5, 10] as in Jamil and Yang (2013)", -5, 10, 0, 1, false, stateless<zakharov>});
+                    "Zakharov; box [-5, 10] as in Jamil and Yang (2013)", -5, 10, 0, 1, false,
+                    stateless<zakharov>});
     return list;
 }
 

@@ -1,15 +1,15 @@
 #include "problems/functions/instance_transform.hpp"
 
+#include "problems/rng.hpp"
+
+#include <Eigen/QR>
 #include <bit>
 #include <string>
 
-#include <Eigen/QR>
-
-#include "problems/rng.hpp"
-
 namespace mhb {
 
-std::uint64_t instance_seed(std::string_view family, std::string_view purpose, std::int64_t instance) noexcept {
+std::uint64_t instance_seed(std::string_view family, std::string_view purpose,
+                            std::int64_t instance) noexcept {
     return mix64(mix64(stable_hash(family) ^ stable_hash(purpose)) ^ static_cast<std::uint64_t>(instance));
 }
 

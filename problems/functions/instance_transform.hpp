@@ -21,16 +21,16 @@
 // c and f* is unchanged.
 #pragma once
 
+#include "problems/problem.hpp"
+
+#include <Eigen/Core>
 #include <cstdint>
 #include <string_view>
 
-#include <Eigen/Core>
-
-#include "problems/problem.hpp"
-
 namespace mhb {
 
-std::uint64_t instance_seed(std::string_view family, std::string_view purpose, std::int64_t instance) noexcept;
+std::uint64_t instance_seed(std::string_view family, std::string_view purpose,
+                            std::int64_t instance) noexcept;
 
 // The shifted optimum of `family`'s instance, inside the central 80% of `box`.
 Eigen::VectorXd draw_shift(std::string_view family, std::int64_t instance, const Box& box);

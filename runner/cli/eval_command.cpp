@@ -1,6 +1,10 @@
 // `mhbench eval --problem SPEC --points FILE`: prints f at each point of FILE, one value a line,
 // at full precision (the shortest text that reads back to the same double), so that anyone can
 // check a function by hand against another implementation.
+#include "problems/parameters.hpp"
+#include "problems/problem_registry.hpp"
+#include "runner/cli/command.hpp"
+
 #include <boost/program_options.hpp>
 #include <fstream>
 #include <iostream>
@@ -8,10 +12,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include "problems/parameters.hpp"
-#include "problems/problem_registry.hpp"
-#include "runner/cli/command.hpp"
 
 namespace mhb::cli {
 namespace {
@@ -55,8 +55,9 @@ std::vector<PointLine> read_points(std::istream& in, const std::string& file, Ei
             i = j;
         }
         if (static_cast<Eigen::Index>(values.size()) != dimension)
-            throw std::runtime_error(where + ": " + std::to_string(values.size()) + " coordinates, but the problem has " +
-                                     std::to_string(dimension) + " dimensions");
+            throw std::runtime_error(where + ": " + std::to_string(values.size()) +
+                                     " coordinates, but the problem has " + std::to_string(dimension) +
+                                     " dimensions");
         PointLine p;
         p.line = line;
         p.x = Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
@@ -77,7 +78,8 @@ int run_eval_command(const std::vector<std::string>& args) {
         "(mhbench list problems shows them all)")(
         "points", po::value<std::string>()->required(),
         "file of points, one a line, coordinates separated by spaces or commas ('-' reads standard input); "
-        "blank lines and lines starting with # are skipped. Points are evaluated as given, outside the box too "
+        "blank lines and lines starting with # are skipped. Points are evaluated as given, outside the box "
+        "too "
         "(no bound repair)");
     po::variables_map vm;
     po::store(po::command_line_parser(args).options(options).run(), vm);

@@ -1,17 +1,16 @@
 // `mhbench eval` end to end: it prints, in another process, exactly the values the library
 // computes (so instances are the same across processes), matches COCO's reference values, and
 // names file, line and column for bad input.
-#include <gtest/gtest.h>
+#include "problems/parameters.hpp"
+#include "problems/problem_registry.hpp"
+#include "problems/rng.hpp"
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
-
-#include "problems/parameters.hpp"
-#include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb {
 namespace {
@@ -112,7 +111,9 @@ TEST(EvalCommand, BadInputNamesFileLineAndColumn) {
     const auto bad_number = temp_file("number.txt", "1,2\n0.5,abc\n");
     r = run("eval --problem sphere:dim=2 --points " + bad_number.string());
     EXPECT_EQ(r.status, 1);
-    EXPECT_NE(r.out.find(", line 2, column 5 (coordinate 2): 'abc' is not a finite number"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(", line 2, column 5 (coordinate 2): 'abc' is not a finite number"),
+              std::string::npos)
+        << r.out;
     EXPECT_EQ(r.out.find("1\n"), std::string::npos) << "no partial output: " << r.out;
     r = run("eval --problem bbob:f=25,dim=2 --points " + bad_number.string());
     EXPECT_EQ(r.status, 2);

@@ -2,21 +2,21 @@
 // the reference vectors: f(x_opt) = f_opt, x_opt in the box, no random point (inside or outside
 // the box) below f_opt,
 // f_opt on COCO's grid, instances that differ, the suite pattern, and thread-safety.
-#include <gtest/gtest.h>
-
-#include <cmath>
-#include <set>
-#include <thread>
-
 #include "problems/bbob/bbob_random.hpp"
 #include "problems/problem_registry.hpp"
 #include "problems/rng.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <set>
+#include <thread>
 
 namespace mhb {
 namespace {
 
 std::string spec(int f, int dim, int instance) {
-    return "bbob:f=" + std::to_string(f) + ",dim=" + std::to_string(dim) + ",instance=" + std::to_string(instance);
+    return "bbob:f=" + std::to_string(f) + ",dim=" + std::to_string(dim) +
+           ",instance=" + std::to_string(instance);
 }
 
 TEST(BbobProperties, OptimumIsAttainedInsideTheBoxAndNoRandomPointBeatsIt) {
@@ -26,7 +26,8 @@ TEST(BbobProperties, OptimumIsAttainedInsideTheBoxAndNoRandomPointBeatsIt) {
                 const std::string s = spec(f, dim, instance);
                 const auto p = builtin_problems().create(s);
                 EXPECT_EQ(p->dimension(), dim);
-                EXPECT_TRUE((p->bounds().lower.array() == -5.0).all() && (p->bounds().upper.array() == 5.0).all());
+                EXPECT_TRUE((p->bounds().lower.array() == -5.0).all() &&
+                            (p->bounds().upper.array() == 5.0).all());
                 const auto opt = p->known_optimum();
                 ASSERT_TRUE(opt && opt->x) << s;
                 EXPECT_TRUE(p->bounds().contains(*opt->x)) << s;

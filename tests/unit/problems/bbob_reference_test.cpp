@@ -3,14 +3,13 @@
 // tests/data/bbob_public_sample.csv (copied from shared/testdata; columns function, dimension,
 // instance, point id, x (space-separated), f, f_opt): 3 points for each of the 24 functions in
 // dimensions 2 and 10, instance 1; the reported f* must also be COCO's f_opt exactly.
-#include <gtest/gtest.h>
-
-#include <cmath>
-#include <set>
-#include <sstream>
-
 #include "problems/problem_registry.hpp"
 #include "results/csv.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <set>
+#include <sstream>
 
 namespace mhb {
 namespace {
@@ -29,8 +28,8 @@ std::set<std::int64_t> expect_matches(const std::string& file, bool has_fopt) {
         const std::int64_t f = table.integer(row, c_function);
         const std::int64_t dim = table.integer(row, c_dimension);
         const std::int64_t instance = table.integer(row, c_instance);
-        const std::string spec =
-            "bbob:f=" + std::to_string(f) + ",dim=" + std::to_string(dim) + ",instance=" + std::to_string(instance);
+        const std::string spec = "bbob:f=" + std::to_string(f) + ",dim=" + std::to_string(dim) +
+                                 ",instance=" + std::to_string(instance);
         const auto problem = builtin_problems().create(spec);
         std::istringstream coordinates(table.rows[row][c_x]);
         Eigen::VectorXd x(dim);
@@ -41,7 +40,8 @@ std::set<std::int64_t> expect_matches(const std::string& file, bool has_fopt) {
         const double expected = table.number(row, c_f);
         const double got = problem->evaluate(x);
         const double tolerance = 1e-9 * std::max(1.0, std::fabs(expected));
-        EXPECT_NEAR(got, expected, tolerance) << spec << " point " << table.rows[row][table.column("point_id")];
+        EXPECT_NEAR(got, expected, tolerance)
+            << spec << " point " << table.rows[row][table.column("point_id")];
         EXPECT_TRUE(problem->known_optimum().has_value());
         if (has_fopt && problem->known_optimum()) {
             EXPECT_EQ(problem->known_optimum()->f, table.number(row, c_fopt)) << spec;

@@ -3,20 +3,21 @@
 // function's formula (the simple ones) or computed with an independent Python implementation of
 // the formula as printed in its reference (Yao, Liu, Lin 1999 table I; CEC 2005 for Weierstrass;
 // Surjanovic and Bingham for Levy), using Python's math module.
-#include <gtest/gtest.h>
+#include "problems/functions/classic_function.hpp"
+#include "problems/problem_registry.hpp"
 
 #include <array>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <initializer_list>
 #include <map>
-
-#include "problems/functions/classic_function.hpp"
-#include "problems/problem_registry.hpp"
 
 namespace mhb {
 namespace {
 
-std::unique_ptr<Problem> make(const std::string& spec) { return builtin_problems().create(spec); }
+std::unique_ptr<Problem> make(const std::string& spec) {
+    return builtin_problems().create(spec);
+}
 
 Eigen::VectorXd vec(std::initializer_list<double> v) {
     Eigen::VectorXd x(static_cast<Eigen::Index>(v.size()));
@@ -33,9 +34,9 @@ double at(const std::string& family, std::initializer_list<double> point, const 
 
 TEST(ClassicFunctions, SeventeenFamiliesAreRegisteredWithTheirNames) {
     const std::vector<std::string> expected = {
-        "sphere",    "ellipsoid", "schwefel_1_2", "schwefel_2_21", "schwefel_2_22", "step",
-        "quartic",   "rosenbrock", "zakharov",    "rastrigin",     "ackley",        "griewank",
-        "schwefel_2_26", "levy",  "weierstrass", "penalized_1",   "penalized_2"};
+        "sphere",        "ellipsoid",  "schwefel_1_2", "schwefel_2_21", "schwefel_2_22", "step",
+        "quartic",       "rosenbrock", "zakharov",     "rastrigin",     "ackley",        "griewank",
+        "schwefel_2_26", "levy",       "weierstrass",  "penalized_1",   "penalized_2"};
     EXPECT_EQ(classic_function_names(), expected);
     for (const auto& name : expected) {
         const auto& entry = builtin_problems().find(name);
@@ -49,7 +50,8 @@ TEST(ClassicFunctions, SeventeenFamiliesAreRegisteredWithTheirNames) {
 TEST(ClassicFunctions, ValueAtTheOptimumIsZeroAndIsTheReportedOptimum) {
     for (const auto& name : classic_function_names()) {
         for (const int dim : {2, 10, 30}) {
-            const std::string spec = name + ":dim=" + std::to_string(dim) + (name == "quartic" ? ",noise=0" : "");
+            const std::string spec =
+                name + ":dim=" + std::to_string(dim) + (name == "quartic" ? ",noise=0" : "");
             const auto p = make(spec);
             const auto opt = p->known_optimum();
             ASSERT_TRUE(opt.has_value()) << spec;
@@ -65,12 +67,23 @@ TEST(ClassicFunctions, UsualBoxesAndOptimaAsPublished) {
     // name -> {lower, upper, optimum coordinate}: Yao, Liu, Lin (1999) table I; CEC 2005 (Weierstrass);
     // Jamil and Yang (2013) (Zakharov); Surjanovic and Bingham (Levy); CEC 2014 (ellipsoid).
     const std::map<std::string, std::array<double, 3>> expected = {
-        {"sphere", {-100, 100, 0}},      {"ellipsoid", {-100, 100, 0}},   {"schwefel_1_2", {-100, 100, 0}},
-        {"schwefel_2_21", {-100, 100, 0}}, {"schwefel_2_22", {-10, 10, 0}}, {"step", {-100, 100, 0}},
-        {"quartic", {-1.28, 1.28, 0}},   {"rosenbrock", {-30, 30, 1}},    {"zakharov", {-5, 10, 0}},
-        {"rastrigin", {-5.12, 5.12, 0}}, {"ackley", {-32, 32, 0}},        {"griewank", {-600, 600, 0}},
-        {"schwefel_2_26", {-500, 500, 420.9687463599821}}, {"levy", {-10, 10, 1}},
-        {"weierstrass", {-0.5, 0.5, 0}}, {"penalized_1", {-50, 50, -1}},  {"penalized_2", {-50, 50, 1}}};
+        {"sphere", {-100, 100, 0}},
+        {"ellipsoid", {-100, 100, 0}},
+        {"schwefel_1_2", {-100, 100, 0}},
+        {"schwefel_2_21", {-100, 100, 0}},
+        {"schwefel_2_22", {-10, 10, 0}},
+        {"step", {-100, 100, 0}},
+        {"quartic", {-1.28, 1.28, 0}},
+        {"rosenbrock", {-30, 30, 1}},
+        {"zakharov", {-5, 10, 0}},
+        {"rastrigin", {-5.12, 5.12, 0}},
+        {"ackley", {-32, 32, 0}},
+        {"griewank", {-600, 600, 0}},
+        {"schwefel_2_26", {-500, 500, 420.9687463599821}},
+        {"levy", {-10, 10, 1}},
+        {"weierstrass", {-0.5, 0.5, 0}},
+        {"penalized_1", {-50, 50, -1}},
+        {"penalized_2", {-50, 50, 1}}};
     ASSERT_EQ(expected.size(), classic_function_names().size());
     for (const auto& [name, box] : expected) {
         const auto p = make(name + ":dim=5");
@@ -105,7 +118,9 @@ TEST(ClassicFunctions, KnownPointsWorkedByHand) {
 }
 
 TEST(ClassicFunctions, KnownPointsFromAnIndependentImplementation) {
-    const auto near = [](double got, double want) { EXPECT_NEAR(got, want, 1e-12 * std::max(1.0, std::fabs(want))); };
+    const auto near = [](double got, double want) {
+        EXPECT_NEAR(got, want, 1e-12 * std::max(1.0, std::fabs(want)));
+    };
     near(at("ackley", {1, 1}), 3.6253849384403627);
     near(at("ackley", {0.5, -2, 3}), 8.185902495877848);
     near(at("griewank", {1}), 0.4599476941318603);

@@ -1,22 +1,22 @@
 // Shifted and rotated instances of the classic functions: the optimum moves where the instance
 // says, the variant is exactly f(Q (x - c) + x*), the rotation is a rotation, the optimum stays the
 // global one (random points never beat it), and instances are the same across runs and threads.
-#include <gtest/gtest.h>
-
-#include <thread>
-#include <vector>
-
-#include <Eigen/LU>
-
 #include "problems/functions/classic_function.hpp"
 #include "problems/functions/instance_transform.hpp"
 #include "problems/problem_registry.hpp"
 #include "problems/rng.hpp"
 
+#include <Eigen/LU>
+#include <gtest/gtest.h>
+#include <thread>
+#include <vector>
+
 namespace mhb {
 namespace {
 
-std::unique_ptr<Problem> make(const std::string& spec) { return builtin_problems().create(spec); }
+std::unique_ptr<Problem> make(const std::string& spec) {
+    return builtin_problems().create(spec);
+}
 
 Eigen::VectorXd random_point(const Box& box, Rng& rng) {
     Eigen::VectorXd x(box.dimension());
@@ -65,7 +65,8 @@ TEST(ClassicInstances, RotationIsAProperRotationComputedOnce) {
     for (const Eigen::Index dim : {1, 2, 3, 10, 30, 100}) {
         for (const int instance : {1, 2, 3, 4, 5}) {
             const Eigen::MatrixXd q = draw_rotation("rastrigin", instance, dim);
-            const double orthogonality = (q.transpose() * q - Eigen::MatrixXd::Identity(dim, dim)).cwiseAbs().maxCoeff();
+            const double orthogonality =
+                (q.transpose() * q - Eigen::MatrixXd::Identity(dim, dim)).cwiseAbs().maxCoeff();
             EXPECT_LT(orthogonality, 1e-12) << dim;
             EXPECT_NEAR(q.determinant(), 1.0, 1e-9) << "dim " << dim << " instance " << instance;
         }
@@ -111,7 +112,8 @@ TEST(ClassicInstances, NoRandomPointBeatsTheOptimumOfAnyVariant) {
         const std::string noise = name == "quartic" ? ",noise=0" : "";
         for (const std::string variant : {"", ",shift=1", ",shift=1,rotate=1", ",rotate=1"}) {
             for (const int instance : {1, 4}) {
-                const std::string spec = name + ":dim=5" + variant + ",instance=" + std::to_string(instance) + noise;
+                const std::string spec =
+                    name + ":dim=5" + variant + ",instance=" + std::to_string(instance) + noise;
                 const auto p = make(spec);
                 const double f_star = p->known_optimum()->f;
                 Rng rng(static_cast<std::uint64_t>(instance) * 101);
