@@ -2,12 +2,14 @@
 
 namespace mhb {
 
-// One line per problem family; each is defined in its own file.
-void register_sphere(ProblemRegistry& registry);
+// One line per problem family (or set of families); each is defined in its own file.
+void register_classic_functions(ProblemRegistry& registry);
+void register_bbob(ProblemRegistry& registry);
 void register_pmsm(ProblemRegistry& registry);
 
 void register_builtin_problems(ProblemRegistry& registry) {
-    register_sphere(registry);
+    register_classic_functions(registry);
+    register_bbob(registry);
     register_pmsm(registry);
 }
 

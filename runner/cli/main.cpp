@@ -19,6 +19,7 @@ int run_list_command(const std::vector<std::string>& args);
 int run_report_command(const std::vector<std::string>& args);
 int run_simulate_command(const std::vector<std::string>& args);
 int run_identify_command(const std::vector<std::string>& args);
+int run_eval_command(const std::vector<std::string>& args);
 
 namespace {
 
@@ -29,6 +30,7 @@ const std::vector<Command>& commands() {
         {"report", "tables, statistics, curve data and figures of a finished study", run_report_command},
         {"simulate", "simulate the paper's drive and write a dataset CSV", run_simulate_command},
         {"identify", "least-squares Rs, Ld, Lq, psi with standard errors from a dataset CSV", run_identify_command},
+        {"eval", "print f at given points (check a function by hand)", run_eval_command},
     };
     return table;
 }
