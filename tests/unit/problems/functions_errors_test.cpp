@@ -26,8 +26,8 @@ TEST(FunctionErrors, BadBbobParametersNameTheParameterAndItsRange) {
     expect_error("bbob:f=0", "bbob: parameter 'f' = 0 is outside [1, 24]");
     expect_error("bbob:dim=0", "bbob: parameter 'dim' = 0 is outside [2, 40]");
     expect_error("bbob:dim=41", "bbob: parameter 'dim' = 41 is outside [2, 40]");
-    expect_error("bbob:instance=-1", "bbob: parameter 'instance' = -1 is outside [1, 1e+05]");
-    expect_error("bbob:instance=0", "bbob: parameter 'instance' = 0 is outside [1, 1e+05]");
+    expect_error("bbob:instance=-1", "bbob: parameter 'instance' = -1 is outside [1, 100000]");
+    expect_error("bbob:instance=0", "bbob: parameter 'instance' = 0 is outside [1, 100000]");
     expect_error("bbob:f=1.5", "bbob: parameter 'f' = 1.5 is not an integer");
     expect_error("bbob:g=3", "bbob: unknown parameter 'g'; known: f, dim, instance");
     // Every error at once, one a line.
@@ -37,7 +37,7 @@ TEST(FunctionErrors, BadBbobParametersNameTheParameterAndItsRange) {
 TEST(FunctionErrors, BadClassicParametersNameTheParameterAndItsRange) {
     expect_error("rastrigin:dim=0", "rastrigin: parameter 'dim' = 0 is outside [1, 10000]");
     expect_error("rosenbrock:dim=1", "rosenbrock: parameter 'dim' = 1 is outside [2, 10000]");
-    expect_error("rastrigin:instance=-1", "rastrigin: parameter 'instance' = -1 is outside [1, 1e+05]");
+    expect_error("rastrigin:instance=-1", "rastrigin: parameter 'instance' = -1 is outside [1, 100000]");
     expect_error("rastrigin:shift=maybe", "rastrigin: parameter 'shift' = maybe is not one of on/off");
     expect_error("sphere:bound=0", "sphere: parameter 'bound' = 0 is outside (0, 1e+12]");
     expect_error("rastrigin:noise=1", "rastrigin: unknown parameter 'noise'");
