@@ -1,5 +1,7 @@
 #include "runner/study_presets.hpp"
 
+#include "problems/functions/classic_function.hpp"
+
 #include <stdexcept>
 
 namespace mhb {
@@ -12,6 +14,14 @@ Study make_study(std::vector<std::string> algorithms, std::vector<std::string> p
     s.problems = std::move(problems);
     s.runs = runs;
     s.budget.max_iterations = iterations;
+    return s;
+}
+
+Study make_evaluation_study(std::vector<std::string> algorithms, std::vector<std::string> problems,
+                            std::int64_t runs, std::int64_t evaluations) {
+    Study s = make_study(std::move(algorithms), std::move(problems), runs, 1);
+    s.budget.max_iterations.reset();
+    s.budget.max_evaluations = evaluations;
     return s;
 }
 
@@ -39,6 +49,12 @@ const std::vector<StudyPreset>& study_presets() {
                      "itlbo:stepwise=off,obl=off", "itlbo:tutorial=off,obl=off", "itlbo:tutorial=off,stepwise=off",
                      "itlbo:tutorial=off,stepwise=off,obl=off"},
                     {"pmsm:speed=2500,load=2"}, 20, 150)},
+        // How much of each result depends on where the optimum is: TLBO and opposition-based moves
+        // are known to favour optima at the centre or origin of the box. Every classic function at
+        // D = 30, unshifted and shifted (instance 1), 20 runs, at an equal budget of 1e5 evaluations
+        // (at equal iterations ITLBO would get about NP (D + 1) / NP = 31 times PSO's evaluations).
+        {"centre-bias", "TLBO, ITLBO, PSO on every classic function at D = 30, unshifted vs shifted; 1e5 evaluations",
+         make_evaluation_study({"tlbo", "itlbo", "pso"}, centre_bias_problem_specs(30), 20, 100000)},
         // Small enough to finish in a blink: checks an installation and the runner end to end.
         {"smoke", "a quick check: random search on a 5-D sphere; 100 iterations, 10 runs",
          make_study({"random-search"}, {"sphere:dim=5"}, 10, 100)},

@@ -26,9 +26,13 @@ std::vector<std::string> algorithm_specs() {
     return specs;
 }
 
+// The small problem set, as users write it: sphere, a shifted Rastrigin and the paper's
+// PMSM steady-state identification problem (a convex quadratic with a known optimum).
 std::vector<std::shared_ptr<const Problem>> problem_set() {
-    return {std::shared_ptr<const Problem>(builtin_problems().create("sphere:dim=5")),
-            std::make_shared<test::ShiftedRastrigin>(5, 11), std::make_shared<test::SteadyStateQuadratic>(7)};
+    std::vector<std::shared_ptr<const Problem>> problems;
+    for (const char* spec : {"sphere:dim=5", "rastrigin:dim=5,shift=1,instance=11", "pmsm:speed=2500,load=2"})
+        problems.emplace_back(builtin_problems().create(spec));
+    return problems;
 }
 
 using Outcome = test::RunOutcome;
