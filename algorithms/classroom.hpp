@@ -9,11 +9,11 @@
 // TLBO, bit for bit" compares two separate codings and can fail.
 #pragma once
 
+#include <Eigen/Core>
+
 #include "algorithms/sampling.hpp"
 #include "problems/objective.hpp"
 #include "problems/rng.hpp"
-
-#include <Eigen/Core>
 
 namespace mhb::detail {
 

@@ -16,9 +16,6 @@
 // range of the current and the last 10 + ceil(30 D / lambda) generations' best f, TolX 1e-12 * sigma0,
 // condition number of C above 1e14, no effect of an axis or of a coordinate, a non-finite sigma.
 // Evaluations: lambda per iteration (the first generation is iteration 0).
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/sampling.hpp"
-
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -27,6 +24,9 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/sampling.hpp"
 
 namespace mhb {
 namespace {

@@ -10,12 +10,12 @@
 // first try: F = 0.5, CR = 0.1 or 0.9; 0.9 since rotated problems need it).
 // Bounds: out-of-box trials are clamped by the Objective (BoundPolicy::clamp).
 // Evaluations: NP to initialise, then NP per iteration (one trial per member).
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/population.hpp"
-
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/population.hpp"
 
 namespace mhb {
 namespace {

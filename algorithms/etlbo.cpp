@@ -14,14 +14,14 @@
 // the elite sizes Rao and Patel tested, 4 to 16).
 // Bounds: the Objective clamps, as in the ITLBO paper.
 // Evaluations: NP to initialise, then 2 NP plus one per duplicate removed in each iteration.
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/population.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/population.hpp"
 
 namespace mhb {
 namespace {

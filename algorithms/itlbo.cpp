@@ -39,11 +39,11 @@
 //
 // Defaults, from the paper: NP = 50 (section 4.1), all three switches on, p = 0.1 (section
 // 2.2.3, "found best after many trials"), unconditional replacement with static bounds.
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/classroom.hpp"
-
 #include <cmath>
 #include <string>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/classroom.hpp"
 
 namespace mhb {
 namespace {

@@ -8,13 +8,13 @@
 // Default NP = 50: the population of the ITLBO paper's study, so that the two compare at equal NP.
 // Bounds: the Objective clamps (Rao clamps to the bounds as well).
 // Evaluations: NP to initialise, then NP per iteration.
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/population.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/population.hpp"
 
 namespace mhb {
 namespace {

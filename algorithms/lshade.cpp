@@ -14,15 +14,15 @@
 // dG/dNFE = 1/N(NFE) and N falls linearly, G = MAX_NFE ln(N_init/N_min) / (N_init - N_min), so
 // MAX_NFE = G (N_init - N_min) / ln(N_init/N_min) (N_init when the two sizes are equal).
 // Evaluations: N_init to initialise, then the current population size N_G per iteration.
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/population.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/population.hpp"
 
 namespace mhb {
 namespace {

@@ -20,9 +20,6 @@
 // evaluations (default 100, the cost of one TLBO iteration at the ITLBO paper's NP = 50); the
 // first evaluation is iteration 0. Points are inside the box (NLopt gets it as bounds); the
 // Objective clamps whatever is not.
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/sampling.hpp"
-
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -31,6 +28,9 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/sampling.hpp"
 
 namespace mhb {
 namespace {

@@ -2,14 +2,14 @@
 // does with one: draw it uniformly in the box (through the Objective, so it is counted) and rank it.
 #pragma once
 
-#include "algorithms/sampling.hpp"
-#include "problems/objective.hpp"
-#include "problems/rng.hpp"
-
 #include <Eigen/Core>
 #include <algorithm>
 #include <numeric>
 #include <vector>
+
+#include "algorithms/sampling.hpp"
+#include "problems/objective.hpp"
+#include "problems/rng.hpp"
 
 namespace mhb {
 

@@ -23,10 +23,10 @@
 //   - pbest_i is replaced only by a strictly better point.
 // Random draws, in order: initial positions (particle by particle, coordinate by coordinate);
 // per particle move, r1 then r2 for each coordinate.
+#include <algorithm>
+
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/sampling.hpp"
-
-#include <algorithm>
 
 namespace mhb {
 namespace {

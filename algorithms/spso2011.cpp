@@ -15,15 +15,15 @@
 // Particles move asynchronously (each sees its informants' latest bests) in a fresh random order
 // every iteration, as in Clerc's reference code.
 // Evaluations: S to initialise, then S per iteration.
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/sampling.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <numeric>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/sampling.hpp"
 
 namespace mhb {
 namespace {

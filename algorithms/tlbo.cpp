@@ -20,10 +20,10 @@
 //
 // Default: NP = 50, the paper's population (section 4.1). Bounds are repaired by clamping
 // (the Objective's default, as in the paper).
+#include <cmath>
+
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/classroom.hpp"
-
-#include <cmath>
 
 namespace mhb {
 namespace {

@@ -104,7 +104,8 @@ double Objective::evaluate(Eigen::VectorXd& x) {
         best_f_ = f;
         best_x_ = x;
     }
-    if (f_opt_ && budget_.target_error && !evaluations_to_target_ && best_f_ - *f_opt_ <= *budget_.target_error)
+    if (f_opt_ && budget_.target_error && !evaluations_to_target_ &&
+        best_f_ - *f_opt_ <= *budget_.target_error)
         evaluations_to_target_ = evaluations_;
     if (evaluations_ == next_checkpoint_) {
         checkpoint_trace_.push_back({evaluations_, best_f_});
@@ -113,7 +114,9 @@ double Objective::evaluate(Eigen::VectorXd& x) {
     return f;
 }
 
-void Objective::initialised() { record_iteration(); }
+void Objective::initialised() {
+    record_iteration();
+}
 
 void Objective::end_iteration() {
     ++iterations_;
@@ -142,7 +145,8 @@ std::int64_t Objective::remaining_evaluations() const {
 }
 
 void Objective::finish() {
-    if (evaluations_ > 0 && (checkpoint_trace_.empty() || checkpoint_trace_.back().evaluations != evaluations_))
+    if (evaluations_ > 0 &&
+        (checkpoint_trace_.empty() || checkpoint_trace_.back().evaluations != evaluations_))
         checkpoint_trace_.push_back({evaluations_, best_f_});
 }
 

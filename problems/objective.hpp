@@ -13,12 +13,11 @@
 // every evaluation in every inner loop.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <limits>
 #include <optional>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "problems/problem.hpp"
 

@@ -18,8 +18,8 @@ ParameterInfo ParameterInfo::real(std::string name, double default_value, double
     return p;
 }
 
-ParameterInfo ParameterInfo::integer(std::string name, long long default_value, long long min,
-                                     long long max, std::string help) {
+ParameterInfo ParameterInfo::integer(std::string name, long long default_value, long long min, long long max,
+                                     std::string help) {
     ParameterInfo p;
     p.name = std::move(name);
     p.kind = ParameterKind::integer;
@@ -83,8 +83,7 @@ std::string ParameterInfo::allowed() const {
     case ParameterKind::real:
     case ParameterKind::integer:
         return std::string(min_open ? "(" : "[") + bound_text(min, kind == ParameterKind::integer) + ", " +
-               bound_text(max, kind == ParameterKind::integer) +
-               (max_open ? ")" : "]");
+               bound_text(max, kind == ParameterKind::integer) + (max_open ? ")" : "]");
     case ParameterKind::boolean:
         return "{on, off}";
     case ParameterKind::choice: {
@@ -180,11 +179,17 @@ bool ParameterValues::boolean(std::string_view name) const {
     return v;
 }
 
-const std::string& ParameterValues::text(std::string_view name) const { return raw(name); }
+const std::string& ParameterValues::text(std::string_view name) const {
+    return raw(name);
+}
 
-bool ParameterValues::has(std::string_view name) const { return values_.find(name) != values_.end(); }
+bool ParameterValues::has(std::string_view name) const {
+    return values_.find(name) != values_.end();
+}
 
-bool ParameterValues::given(std::string_view name) const { return given_.find(name) != given_.end(); }
+bool ParameterValues::given(std::string_view name) const {
+    return given_.find(name) != given_.end();
+}
 
 ParameterValues validate_parameters(std::string_view component, const std::vector<ParameterInfo>& declared,
                                     const Spec& spec) {
@@ -200,8 +205,8 @@ ParameterValues validate_parameters(std::string_view component, const std::vecto
             std::string known;
             for (const auto& d : declared)
                 known += (known.empty() ? "" : ", ") + d.name;
-            errors.push_back(std::string(component) + ": unknown parameter '" + key + "'; known: " +
-                             (known.empty() ? "none" : known));
+            errors.push_back(std::string(component) + ": unknown parameter '" + key +
+                             "'; known: " + (known.empty() ? "none" : known));
             continue;
         }
         const std::string shown = prefix + key + "' = " + value;

@@ -34,8 +34,8 @@ struct ParameterInfo {
     static ParameterInfo integer(std::string name, long long default_value, long long min, long long max,
                                  std::string help);
     static ParameterInfo boolean(std::string name, bool default_value, std::string help);
-    static ParameterInfo choice(std::string name, std::string default_value,
-                                std::vector<std::string> choices, std::string help);
+    static ParameterInfo choice(std::string name, std::string default_value, std::vector<std::string> choices,
+                                std::string help);
     static ParameterInfo text(std::string name, std::string default_value, std::string help);
 
     // Make a bound exclusive: ParameterInfo::real("F", 0.5, 0, 2, "...").open_below().
@@ -80,7 +80,7 @@ private:
 // in one std::invalid_argument, one line each, in the form
 // `pso: parameter 'w' = 1.3 is outside [0, 1]`.
 ParameterValues validate_parameters(std::string_view component, const std::vector<ParameterInfo>& declared,
-                                     const Spec& spec);
+                                    const Spec& spec);
 
 // Strict number parsing for user input: the whole text must be a finite number.
 bool parse_real(std::string_view text, double& out);

@@ -6,7 +6,8 @@
 namespace mhb {
 
 bool Box::contains(const Eigen::VectorXd& x) const {
-    return x.size() == lower.size() && (x.array() >= lower.array()).all() && (x.array() <= upper.array()).all();
+    return x.size() == lower.size() && (x.array() >= lower.array()).all() &&
+           (x.array() <= upper.array()).all();
 }
 
 void Box::validate(const std::string& owner) const {

@@ -4,11 +4,10 @@
 // Optimisers never see a Problem: they see the counted Objective (problems/objective.hpp).
 #pragma once
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace mhb {
 

@@ -15,8 +15,7 @@
 
 namespace mhb {
 
-template <class Product>
-class Registry {
+template <class Product> class Registry {
 public:
     using Factory = std::function<std::unique_ptr<Product>(const ParameterValues&)>;
 
@@ -45,8 +44,8 @@ public:
         std::string known;
         for (const auto& e : entries_)
             known += (known.empty() ? "" : ", ") + e.name;
-        throw std::invalid_argument("unknown " + kind_ + " '" + std::string(name) + "'; known: " +
-                                    (known.empty() ? "none" : known));
+        throw std::invalid_argument("unknown " + kind_ + " '" + std::string(name) +
+                                    "'; known: " + (known.empty() ? "none" : known));
     }
 
     [[nodiscard]] bool contains(std::string_view name) const {

@@ -1,11 +1,11 @@
 #include "results/comparison_tables.hpp"
 
-#include "results/hypothesis_tests.hpp"
-#include "results/statistics.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "results/hypothesis_tests.hpp"
+#include "results/statistics.hpp"
 
 namespace mhb {
 

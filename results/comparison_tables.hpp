@@ -10,13 +10,13 @@
 //    the reference, and Wilcoxon signed-rank on per-problem medians (paired by problem).
 #pragma once
 
-#include "results/study_index.hpp"
-#include "results/table.hpp"
-
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "results/study_index.hpp"
+#include "results/table.hpp"
 
 namespace mhb {
 

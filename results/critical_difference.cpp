@@ -1,11 +1,11 @@
 #include "results/critical_difference.hpp"
 
+#include <array>
+#include <cmath>
+
 #include "results/comparison_tables.hpp"
 #include "results/csv.hpp"
 #include "results/hypothesis_tests.hpp"
-
-#include <array>
-#include <cmath>
 
 namespace mhb {
 

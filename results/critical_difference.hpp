@@ -5,10 +5,10 @@
 // k = 2..10 algorithms; Boost.Math has no studentized range distribution to compute other cases.
 #pragma once
 
-#include "results/study_index.hpp"
-
 #include <optional>
 #include <string>
+
+#include "results/study_index.hpp"
 
 namespace mhb {
 

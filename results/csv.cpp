@@ -34,9 +34,13 @@ std::string csv_number(double value) {
     return std::string(buf, result.ptr);
 }
 
-std::string csv_number(std::int64_t value) { return std::to_string(value); }
+std::string csv_number(std::int64_t value) {
+    return std::to_string(value);
+}
 
-std::string csv_optional(const std::optional<double>& value) { return value ? csv_number(*value) : ""; }
+std::string csv_optional(const std::optional<double>& value) {
+    return value ? csv_number(*value) : "";
+}
 
 std::vector<std::string> csv_split(std::string_view line) {
     std::vector<std::string> fields;
@@ -85,8 +89,9 @@ bool CsvTable::has_column(std::string_view name) const {
 namespace {
 
 [[noreturn]] void bad_cell(const CsvTable& t, std::size_t row, std::size_t column, const char* what) {
-    throw std::runtime_error(t.path.string() + ", line " + std::to_string(t.line_numbers[row]) + ", column '" +
-                             t.header[column] + "': '" + t.rows[row][column] + "' is not " + what);
+    throw std::runtime_error(t.path.string() + ", line " + std::to_string(t.line_numbers[row]) +
+                             ", column '" + t.header[column] + "': '" + t.rows[row][column] + "' is not " +
+                             what);
 }
 
 } // namespace
@@ -141,7 +146,8 @@ CsvTable read_csv(const std::filesystem::path& path) {
         try {
             fields = csv_split(line);
         } catch (const std::runtime_error& e) {
-            throw std::runtime_error(path.string() + ", line " + std::to_string(line_number) + ": " + e.what());
+            throw std::runtime_error(path.string() + ", line " + std::to_string(line_number) + ": " +
+                                     e.what());
         }
         if (table.header.empty()) {
             table.header = std::move(fields);

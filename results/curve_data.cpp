@@ -1,12 +1,12 @@
 #include "results/curve_data.hpp"
 
-#include "results/csv.hpp"
-#include "results/statistics.hpp"
-
 #include <algorithm>
 #include <functional>
 #include <set>
 #include <utility>
+
+#include "results/csv.hpp"
+#include "results/statistics.hpp"
 
 namespace mhb {
 

@@ -6,9 +6,9 @@
 // (best-so-far does not change after a run ends), so every point averages over all runs.
 #pragma once
 
-#include "results/study_index.hpp"
-
 #include <string>
+
+#include "results/study_index.hpp"
 
 namespace mhb {
 

@@ -1,12 +1,12 @@
 #include "results/ioh_export.hpp"
 
-#include "results/csv.hpp"
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
 #include <stdexcept>
+
+#include "results/csv.hpp"
 
 namespace mhb {
 

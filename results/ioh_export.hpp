@@ -9,9 +9,9 @@
 // evaluation count is where it was recorded, which can be later than where it happened.
 #pragma once
 
-#include "results/study_index.hpp"
-
 #include <filesystem>
+
+#include "results/study_index.hpp"
 
 namespace mhb {
 

@@ -1,10 +1,10 @@
 #include "results/paper_tables.hpp"
 
-#include "results/published_pmsm.hpp"
-#include "results/statistics.hpp"
-
 #include <cctype>
 #include <cmath>
+
+#include "results/published_pmsm.hpp"
+#include "results/statistics.hpp"
 
 namespace mhb {
 

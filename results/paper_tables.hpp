@@ -10,10 +10,10 @@
 // For PMSM conditions the paper did not run, the same layouts are produced without paper columns.
 #pragma once
 
+#include <vector>
+
 #include "results/study_index.hpp"
 #include "results/table.hpp"
-
-#include <vector>
 
 namespace mhb {
 

@@ -1,5 +1,8 @@
 #include "results/report.hpp"
 
+#include <cstdlib>
+#include <stdexcept>
+
 #include "results/comparison_tables.hpp"
 #include "results/critical_difference.hpp"
 #include "results/csv.hpp"
@@ -8,9 +11,6 @@
 #include "results/paper_tables.hpp"
 #include "results/study_index.hpp"
 #include "results/table.hpp"
-
-#include <cstdlib>
-#include <stdexcept>
 
 namespace mhb {
 

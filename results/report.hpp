@@ -6,14 +6,14 @@
 // Prints the Markdown tables to the console. The runner calls it at the end of `mhbench run`.
 #pragma once
 
-#include "results/store.hpp"
-
 #include <filesystem>
 #include <optional>
 #include <ostream>
 #include <set>
 #include <string>
 #include <vector>
+
+#include "results/store.hpp"
 
 namespace mhb {
 

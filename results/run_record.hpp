@@ -37,8 +37,8 @@ struct RunRecord {
     std::string message; // why a failed run failed
 
     double best_f = std::numeric_limits<double>::quiet_NaN();
-    std::optional<double> f_opt;  // known optimum of the problem
-    std::vector<double> x_opt;    // where it is attained, where known (e.g. the least-squares theta*)
+    std::optional<double> f_opt; // known optimum of the problem
+    std::vector<double> x_opt;   // where it is attained, where known (e.g. the least-squares theta*)
     std::int64_t evaluations = 0;
     std::int64_t iterations = 0;
     std::optional<std::int64_t> evaluations_to_target;

@@ -81,10 +81,10 @@ StudyWriter::Block StudyWriter::render(const RunRecord& r, double wall_seconds) 
     Block block;
     const std::string id = std::to_string(r.run_id);
     std::string line = id + ',' + csv_field(r.algorithm) + ',' + csv_field(r.problem) + ',' +
-                       std::to_string(r.run_index) + ',' + std::to_string(r.seed) + ',' + (r.ok ? "ok" : "failed") +
-                       ',' + std::to_string(r.evaluations) + ',' + std::to_string(r.iterations) + ',' +
-                       (r.ok ? csv_number(r.best_f) : "") + ',' + csv_optional(r.f_opt) + ',' +
-                       csv_optional(r.error()) + ',' +
+                       std::to_string(r.run_index) + ',' + std::to_string(r.seed) + ',' +
+                       (r.ok ? "ok" : "failed") + ',' + std::to_string(r.evaluations) + ',' +
+                       std::to_string(r.iterations) + ',' + (r.ok ? csv_number(r.best_f) : "") + ',' +
+                       csv_optional(r.f_opt) + ',' + csv_optional(r.error()) + ',' +
                        (r.evaluations_to_target ? std::to_string(*r.evaluations_to_target) : "") + ',' +
                        join_numbers(r.best_x);
     for (const auto& column : parameter_columns_) {
@@ -109,8 +109,8 @@ StudyWriter::Block StudyWriter::render(const RunRecord& r, double wall_seconds) 
     block.run_line = line + ',' + csv_field(r.message) + '\n';
 
     for (const auto& p : r.curve) {
-        block.curve_lines += id + ',' + std::to_string(p.iteration) + ',' + std::to_string(p.evaluations) + ',' +
-                             csv_number(p.best_f) + '\n';
+        block.curve_lines += id + ',' + std::to_string(p.iteration) + ',' + std::to_string(p.evaluations) +
+                             ',' + csv_number(p.best_f) + '\n';
         if (!r.parameter_names.empty() && !p.best_x.empty()) {
             std::string row = id + ',' + std::to_string(p.iteration);
             for (const auto& column : parameter_columns_) {
@@ -124,7 +124,8 @@ StudyWriter::Block StudyWriter::render(const RunRecord& r, double wall_seconds) 
         }
     }
     for (const auto& c : r.checkpoints)
-        block.checkpoint_lines += id + ',' + std::to_string(c.evaluations) + ',' + csv_number(c.best_f) + '\n';
+        block.checkpoint_lines +=
+            id + ',' + std::to_string(c.evaluations) + ',' + csv_number(c.best_f) + '\n';
     block.timing_line = id + ',' + csv_number(wall_seconds) + '\n';
     return block;
 }
@@ -145,7 +146,8 @@ void append_tagged(std::string& out, char tag, const std::string& lines) {
 }
 
 std::string journal_text(std::int64_t id, const std::string& run, const std::string& curves,
-                         const std::string& checkpoints, const std::string& trajectories, const std::string& timing) {
+                         const std::string& checkpoints, const std::string& trajectories,
+                         const std::string& timing) {
     std::string text = "begin " + std::to_string(id) + '\n';
     append_tagged(text, 'R', run);
     append_tagged(text, 'C', curves);
@@ -168,7 +170,8 @@ void StudyWriter::load_journal() {
             break; // a last line without its newline was cut short
         if (line.rfind("begin ", 0) == 0) {
             current = Block{};
-            in_block = std::from_chars(line.data() + 6, line.data() + line.size(), current_id).ec == std::errc();
+            in_block =
+                std::from_chars(line.data() + 6, line.data() + line.size(), current_id).ec == std::errc();
         } else if (line.rfind("end ", 0) == 0) {
             std::int64_t id = -2;
             std::from_chars(line.data() + 4, line.data() + line.size(), id);
@@ -206,14 +209,15 @@ void StudyWriter::load_journal() {
     // half-written line.
     std::string text;
     for (const auto& [id, b] : blocks_)
-        text += journal_text(id, b.run_line, b.curve_lines, b.checkpoint_lines, b.trajectory_lines, b.timing_line);
+        text += journal_text(id, b.run_line, b.curve_lines, b.checkpoint_lines, b.trajectory_lines,
+                             b.timing_line);
     write_file_atomically(dir_ / StudyFiles::journal, text);
 }
 
 void StudyWriter::append(const RunRecord& record, double wall_seconds) {
     Block block = render(record, wall_seconds);
-    const std::string text = journal_text(record.run_id, block.run_line, block.curve_lines, block.checkpoint_lines,
-                                          block.trajectory_lines, block.timing_line);
+    const std::string text = journal_text(record.run_id, block.run_line, block.curve_lines,
+                                          block.checkpoint_lines, block.trajectory_lines, block.timing_line);
     const std::lock_guard<std::mutex> lock(mutex_);
     std::ofstream out(dir_ / StudyFiles::journal, std::ios::binary | std::ios::app);
     out.write(text.data(), static_cast<std::streamsize>(text.size()));
@@ -361,8 +365,9 @@ StudyData load_study(const fs::path& dir) {
     const CsvTable checkpoints = read_csv(dir / StudyFiles::checkpoints);
     for (std::size_t row = 0; row < checkpoints.rows.size(); ++row) {
         const auto id = find_run(index, checkpoints, row);
-        data.runs[index[id]].checkpoints.push_back({checkpoints.integer(row, checkpoints.column("evaluations")),
-                                                    checkpoints.number(row, checkpoints.column("best_f"))});
+        data.runs[index[id]].checkpoints.push_back(
+            {checkpoints.integer(row, checkpoints.column("evaluations")),
+             checkpoints.number(row, checkpoints.column("best_f"))});
     }
     const CsvTable trajectories = read_csv(dir / StudyFiles::trajectories);
     for (std::size_t row = 0; row < trajectories.rows.size(); ++row) {
@@ -383,7 +388,8 @@ StudyData load_study(const fs::path& dir) {
     }
     const CsvTable timings = read_csv(dir / StudyFiles::timings);
     for (std::size_t row = 0; row < timings.rows.size(); ++row)
-        data.wall_seconds[find_run(index, timings, row)] = timings.number(row, timings.column("wall_seconds"));
+        data.wall_seconds[find_run(index, timings, row)] =
+            timings.number(row, timings.column("wall_seconds"));
     return data;
 }
 

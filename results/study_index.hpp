@@ -3,13 +3,13 @@
 // computes starts from here. (results/ reads specs as text: it depends on no other library.)
 #pragma once
 
-#include "results/run_record.hpp"
-#include "results/store.hpp"
-
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "results/run_record.hpp"
+#include "results/store.hpp"
 
 namespace mhb {
 

@@ -1,10 +1,10 @@
 #include "results/table.hpp"
 
-#include "results/csv.hpp"
-
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+
+#include "results/csv.hpp"
 
 namespace mhb {
 

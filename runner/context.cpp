@@ -1,10 +1,10 @@
 #include "runner/context.hpp"
 
-#include "mhb_version.hpp"
-
 #include <ctime>
 #include <thread>
 #include <unistd.h>
+
+#include "mhb_version.hpp"
 
 namespace mhb {
 namespace {

@@ -7,7 +7,9 @@
 namespace mhb {
 namespace {
 
-std::vector<double> to_vector(const Eigen::VectorXd& x) { return {x.data(), x.data() + x.size()}; }
+std::vector<double> to_vector(const Eigen::VectorXd& x) {
+    return {x.data(), x.data() + x.size()};
+}
 
 } // namespace
 

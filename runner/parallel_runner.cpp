@@ -1,7 +1,5 @@
 #include "runner/parallel_runner.hpp"
 
-#include "runner/execute_run.hpp"
-
 #include <chrono>
 #include <mutex>
 #include <oneapi/tbb/blocked_range.h>
@@ -11,6 +9,8 @@
 #include <oneapi/tbb/partitioner.h>
 #include <stdexcept>
 #include <vector>
+
+#include "runner/execute_run.hpp"
 
 namespace mhb {
 

@@ -8,12 +8,12 @@
 // journaled. The CLI sets it from SIGINT/SIGTERM; tests set it from on_run_finished.
 #pragma once
 
-#include "results/store.hpp"
-#include "runner/study.hpp"
-
 #include <atomic>
 #include <cstdint>
 #include <functional>
+
+#include "results/store.hpp"
+#include "runner/study.hpp"
 
 namespace mhb {
 

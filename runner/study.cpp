@@ -1,11 +1,11 @@
 #include "runner/study.hpp"
 
-#include "problems/parameters.hpp"
-#include "problems/spec.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "problems/parameters.hpp"
+#include "problems/spec.hpp"
 
 namespace mhb {
 namespace {

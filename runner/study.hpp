@@ -9,15 +9,15 @@
 // how many threads execute it.
 #pragma once
 
-#include "algorithms/algorithm_registry.hpp"
-#include "problems/objective.hpp"
-#include "problems/problem_registry.hpp"
-#include "runner/execute_run.hpp"
-
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "problems/objective.hpp"
+#include "problems/problem_registry.hpp"
+#include "runner/execute_run.hpp"
 
 namespace mhb {
 

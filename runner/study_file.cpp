@@ -1,8 +1,5 @@
 #include "runner/study_file.hpp"
 
-#include "problems/parameters.hpp"
-#include "problems/spec.hpp"
-
 #include <boost/program_options/options_description.hpp>
 #include <boost/program_options/parsers.hpp>
 #include <charconv>
@@ -10,6 +7,9 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+
+#include "problems/parameters.hpp"
+#include "problems/spec.hpp"
 
 namespace mhb {
 std::string study_ini(const Study& study) {

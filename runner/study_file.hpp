@@ -17,11 +17,11 @@
 // to decide whether a directory holds the same study.
 #pragma once
 
-#include "runner/study.hpp"
-
 #include <filesystem>
 #include <string>
 #include <string_view>
+
+#include "runner/study.hpp"
 
 namespace mhb {
 

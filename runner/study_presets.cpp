@@ -1,8 +1,8 @@
 #include "runner/study_presets.hpp"
 
-#include "problems/functions/classic_function.hpp"
-
 #include <stdexcept>
+
+#include "problems/functions/classic_function.hpp"
 
 namespace mhb {
 namespace {
@@ -34,26 +34,29 @@ const std::vector<StudyPreset>& study_presets() {
         {"paper", "the paper's study: ITLBO, TLBO, PSO on PMSM at 2500 rpm, 2 N.m; 150 iterations, 20 runs",
          make_study({"itlbo", "tlbo", "pso"}, {"pmsm:speed=2500,load=2"}, 20, 150)},
         // Table 4 of the paper: the same study at its three operating conditions.
-        {"paper-table4", "the paper's Table 4: ITLBO, TLBO, PSO at 2500 rpm 2 N.m, 2500 rpm 3 N.m, 2000 rpm 2 N.m",
+        {"paper-table4",
+         "the paper's Table 4: ITLBO, TLBO, PSO at 2500 rpm 2 N.m, 2500 rpm 3 N.m, 2000 rpm 2 N.m",
          make_study({"itlbo", "tlbo", "pso"},
                     {"pmsm:speed=2500,load=2", "pmsm:speed=2500,load=3", "pmsm:speed=2000,load=2"}, 20, 150)},
         // The paper's condition with measurement noise (0.02 A on the currents, 0.5 V on the voltages,
         // DESIGN.md section 5): the least-squares optimum moves away from the truth by about the
         // noise's standard errors, which bounds what any optimiser can identify.
         {"paper-noisy", "the paper's study on noisy measurements (0.02 A, 0.5 V): accuracy limited by noise",
-         make_study({"itlbo", "tlbo", "pso"}, {"pmsm:speed=2500,load=2,noise_i=0.02,noise_u=0.5,seed=1"}, 20, 150)},
+         make_study({"itlbo", "tlbo", "pso"}, {"pmsm:speed=2500,load=2,noise_i=0.02,noise_u=0.5,seed=1"}, 20,
+                    150)},
         // All 8 on/off combinations of ITLBO's components on the paper's problem; with all three off
         // ITLBO is TLBO. Add --evaluations N to compare at equal budgets instead of equal iterations.
         {"ablation", "ITLBO's 8 component combinations (tutorial, stepwise, obl) on the paper's problem",
          make_study({"itlbo", "itlbo:obl=off", "itlbo:stepwise=off", "itlbo:tutorial=off",
-                     "itlbo:stepwise=off,obl=off", "itlbo:tutorial=off,obl=off", "itlbo:tutorial=off,stepwise=off",
-                     "itlbo:tutorial=off,stepwise=off,obl=off"},
+                     "itlbo:stepwise=off,obl=off", "itlbo:tutorial=off,obl=off",
+                     "itlbo:tutorial=off,stepwise=off", "itlbo:tutorial=off,stepwise=off,obl=off"},
                     {"pmsm:speed=2500,load=2"}, 20, 150)},
         // How much of each result depends on where the optimum is: TLBO and opposition-based moves
         // are known to favour optima at the centre or origin of the box. Every classic function at
         // D = 30, unshifted and shifted (instance 1), 20 runs, at an equal budget of 1e5 evaluations
         // (at equal iterations ITLBO would get about NP (D + 1) / NP = 31 times PSO's evaluations).
-        {"centre-bias", "TLBO, ITLBO, PSO on every classic function at D = 30, unshifted vs shifted; 1e5 evaluations",
+        {"centre-bias",
+         "TLBO, ITLBO, PSO on every classic function at D = 30, unshifted vs shifted; 1e5 evaluations",
          make_evaluation_study({"tlbo", "itlbo", "pso"}, centre_bias_problem_specs(30), 20, 100000)},
         // Small enough to finish in a blink: checks an installation and the runner end to end.
         {"smoke", "a quick check: random search on a 5-D sphere; 100 iterations, 10 runs",

@@ -2,11 +2,11 @@
 // entry in study_presets.cpp. Command-line options override a preset's values.
 #pragma once
 
-#include "runner/study.hpp"
-
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "runner/study.hpp"
 
 namespace mhb {
 

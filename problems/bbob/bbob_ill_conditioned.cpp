@@ -1,13 +1,13 @@
 // BBOB functions with high conditioning f10-f14: ellipsoid, discus, bent cigar, sharp ridge,
 // different powers (all rotated). Definitions: Hansen et al. (2009), checked against COCO's
 // f_ellipsoid.c, f_discus.c, f_bent_cigar.c, f_sharp_ridge.c and f_different_powers.c.
-#include "problems/bbob/bbob_function.hpp"
-#include "problems/bbob/bbob_random.hpp"
-#include "problems/bbob/bbob_transforms.hpp"
-
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "problems/bbob/bbob_function.hpp"
+#include "problems/bbob/bbob_random.hpp"
+#include "problems/bbob/bbob_transforms.hpp"
 
 namespace mhb::bbob {
 namespace {

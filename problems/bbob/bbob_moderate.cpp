@@ -1,14 +1,14 @@
 // BBOB functions with low or moderate conditioning f6-f9: attractive sector, step ellipsoid,
 // Rosenbrock (original and rotated). Definitions: Hansen et al. (2009), checked against COCO's
 // f_attractive_sector.c, f_step_ellipsoid.c and f_rosenbrock.c.
-#include "problems/bbob/bbob_function.hpp"
-#include "problems/bbob/bbob_random.hpp"
-#include "problems/bbob/bbob_transforms.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "problems/bbob/bbob_function.hpp"
+#include "problems/bbob/bbob_random.hpp"
+#include "problems/bbob/bbob_transforms.hpp"
 
 namespace mhb::bbob {
 namespace {

@@ -2,16 +2,16 @@
 // Weierstrass, Schaffers F7 (condition 10 and 1000), composite Griewank-Rosenbrock F8F2.
 // Definitions: Hansen et al. (2009), checked against COCO's f_rastrigin.c, f_weierstrass.c,
 // f_schaffers.c and f_griewank_rosenbrock.c.
-#include "problems/bbob/bbob_function.hpp"
-#include "problems/bbob/bbob_random.hpp"
-#include "problems/bbob/bbob_transforms.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+
+#include "problems/bbob/bbob_function.hpp"
+#include "problems/bbob/bbob_random.hpp"
+#include "problems/bbob/bbob_transforms.hpp"
 
 namespace mhb::bbob {
 namespace {

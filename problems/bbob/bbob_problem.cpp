@@ -1,12 +1,12 @@
 // The `bbob` problem family: COCO's noiseless BBOB suite, 24 functions in dimension 2-40, by
 // instance number, on [-5, 5]^D, with f_opt and x_opt known. `bbob:f=1-24,dim=10,instance=1-5`
 // expands into the 120 problems of a suite run.
+#include <string>
+
 #include "problems/bbob/bbob_function.hpp"
 #include "problems/bbob/bbob_random.hpp"
 #include "problems/bbob/bbob_transforms.hpp"
 #include "problems/problem_registry.hpp"
-
-#include <string>
 
 namespace mhb {
 namespace {

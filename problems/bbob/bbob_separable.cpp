@@ -1,14 +1,14 @@
 // BBOB separable functions f1-f5: sphere, ellipsoid, Rastrigin, Bueche-Rastrigin, linear slope.
 // Definitions: Hansen et al. (2009), checked against COCO's f_sphere.c, f_ellipsoid.c,
 // f_rastrigin.c, f_bueche_rastrigin.c and f_linear_slope.c.
-#include "problems/bbob/bbob_function.hpp"
-#include "problems/bbob/bbob_random.hpp"
-#include "problems/bbob/bbob_transforms.hpp"
-
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+
+#include "problems/bbob/bbob_function.hpp"
+#include "problems/bbob/bbob_random.hpp"
+#include "problems/bbob/bbob_transforms.hpp"
 
 namespace mhb::bbob {
 namespace {

@@ -3,16 +3,16 @@
 // Definitions: Hansen et al. (2009), checked against COCO's f_schwefel.c (with
 // transform_vars_x_hat.c and transform_vars_z_hat.c), f_gallagher.c, f_katsuura.c and
 // f_lunacek_bi_rastrigin.c.
-#include "problems/bbob/bbob_function.hpp"
-#include "problems/bbob/bbob_random.hpp"
-#include "problems/bbob/bbob_transforms.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "problems/bbob/bbob_function.hpp"
+#include "problems/bbob/bbob_random.hpp"
+#include "problems/bbob/bbob_transforms.hpp"
 
 namespace mhb::bbob {
 namespace {

@@ -1,10 +1,10 @@
 // The multimodal classic functions. Formulas and usual boxes as in Yao, Liu and Lin (1999),
 // "Evolutionary programming made faster", IEEE TEVC 3(2), table I (f8-f13), unless named otherwise.
-#include "problems/functions/classic_function.hpp"
-
 #include <array>
 #include <cmath>
 #include <numbers>
+
+#include "problems/functions/classic_function.hpp"
 
 namespace mhb {
 namespace {

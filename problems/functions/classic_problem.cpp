@@ -2,15 +2,15 @@
 // each with dim, bound, shift, rotate and instance (and noise for the quartic function), e.g.
 // `rastrigin:dim=30,shift=1,rotate=1,instance=3`. How an instance shifts and rotates is in
 // instance_transform.hpp; everything it draws is computed here once, at construction.
-#include "problems/functions/classic_function.hpp"
-#include "problems/functions/instance_transform.hpp"
-#include "problems/parameters.hpp"
-#include "problems/problem_registry.hpp"
-
 #include <array>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "problems/functions/classic_function.hpp"
+#include "problems/functions/instance_transform.hpp"
+#include "problems/parameters.hpp"
+#include "problems/problem_registry.hpp"
 
 namespace mhb {
 namespace {

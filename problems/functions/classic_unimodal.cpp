@@ -1,9 +1,9 @@
 // The unimodal classic functions. Formulas and usual boxes as in Yao, Liu and Lin (1999),
 // "Evolutionary programming made faster", IEEE TEVC 3(2), table I (f1-f7), unless named otherwise.
-#include "problems/functions/classic_function.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "problems/functions/classic_function.hpp"
 
 namespace mhb {
 namespace {

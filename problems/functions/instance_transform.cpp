@@ -1,10 +1,10 @@
 #include "problems/functions/instance_transform.hpp"
 
-#include "problems/rng.hpp"
-
 #include <Eigen/QR>
 #include <bit>
 #include <string>
+
+#include "problems/rng.hpp"
 
 namespace mhb {
 

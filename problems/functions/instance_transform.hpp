@@ -21,11 +21,11 @@
 // c and f* is unchanged.
 #pragma once
 
-#include "problems/problem.hpp"
-
 #include <Eigen/Core>
 #include <cstdint>
 #include <string_view>
+
+#include "problems/problem.hpp"
 
 namespace mhb {
 

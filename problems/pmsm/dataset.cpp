@@ -41,7 +41,9 @@ void Dataset::set_metadata(const std::string& key, std::string value) {
     metadata.emplace_back(key, std::move(value));
 }
 
-void Dataset::set_metadata(const std::string& key, double value) { set_metadata(key, format_real(value)); }
+void Dataset::set_metadata(const std::string& key, double value) {
+    set_metadata(key, format_real(value));
+}
 
 std::optional<Eigen::Vector4d> Dataset::true_parameters() const {
     Eigen::Vector4d out;

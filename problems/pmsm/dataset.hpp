@@ -4,13 +4,12 @@
 // Metadata are free key=value pairs; Rs, Ld, Lq and psi, when present, are the true parameters.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace mhb::pmsm {
 
@@ -26,7 +25,8 @@ struct Dataset {
 
     [[nodiscard]] std::size_t size() const { return t.size(); }
     void reserve(std::size_t n);
-    void push_back(double t_k, double ud_k, double uq_k, double id_k, double iq_k, double omega_k, bool injected_k);
+    void push_back(double t_k, double ud_k, double uq_k, double id_k, double iq_k, double omega_k,
+                   bool injected_k);
 
     // The value of a metadata key, or nullptr.
     [[nodiscard]] const std::string* find_metadata(const std::string& key) const;

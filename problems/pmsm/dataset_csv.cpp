@@ -32,7 +32,8 @@ std::vector<std::string_view> split_fields(std::string_view line) {
     std::size_t start = 0;
     while (true) {
         const auto comma = line.find(',', start);
-        out.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+        out.push_back(trim(
+            line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
         if (comma == std::string_view::npos)
             return out;
         start = comma + 1;
@@ -45,13 +46,17 @@ public:
     [[noreturn]] void fail(std::size_t line, const std::string& what) const {
         throw std::runtime_error(source_ + ": line " + std::to_string(line) + ", " + what);
     }
-    [[noreturn]] void fail_file(const std::string& what) const { throw std::runtime_error(source_ + ": " + what); }
+    [[noreturn]] void fail_file(const std::string& what) const {
+        throw std::runtime_error(source_ + ": " + what);
+    }
 
 private:
     const std::string& source_;
 };
 
-std::string column_label(std::string_view name) { return "column '" + std::string(name) + "'"; }
+std::string column_label(std::string_view name) {
+    return "column '" + std::string(name) + "'";
+}
 
 // A finite number or a one-line reason why not.
 double parse_cell(std::string_view text, std::size_t line, std::string_view column, const ErrorContext& ctx) {
@@ -63,7 +68,8 @@ double parse_cell(std::string_view text, std::size_t line, std::string_view colu
     std::string_view body = (!text.empty() && text.front() == '+') ? text.substr(1) : text;
     const auto [ptr, ec] = std::from_chars(body.data(), body.data() + body.size(), raw);
     if (ec == std::errc() && ptr == body.data() + body.size() && !std::isfinite(raw))
-        ctx.fail(line, column_label(column) + ": '" + std::string(text) + "' is not finite (NaN or infinity)");
+        ctx.fail(line,
+                 column_label(column) + ": '" + std::string(text) + "' is not finite (NaN or infinity)");
     if (text.empty())
         ctx.fail(line, column_label(column) + ": the field is empty");
     ctx.fail(line, column_label(column) + ": '" + std::string(text) + "' is not a number");
@@ -113,7 +119,8 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
                         found = c;
                 if (found == column_names.size())
                     ctx.fail(line_number, "column " + std::to_string(position + 1) + ": unknown column '" +
-                                              std::string(name) + "' (expected t,ud,uq,id,iq,omega[,injected])");
+                                              std::string(name) +
+                                              "' (expected t,ud,uq,id,iq,omega[,injected])");
                 if (seen[found])
                     ctx.fail(line_number, "column " + std::to_string(position + 1) + ": column '" +
                                               std::string(name) + "' appears twice");
@@ -122,8 +129,9 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
             }
             for (std::size_t c = 0; c < injected_column; ++c)
                 if (!seen[c])
-                    ctx.fail(line_number, "column '" + std::string(column_names[c]) +
-                                              "' is missing from the header (expected t,ud,uq,id,iq,omega[,injected])");
+                    ctx.fail(line_number,
+                             "column '" + std::string(column_names[c]) +
+                                 "' is missing from the header (expected t,ud,uq,id,iq,omega[,injected])");
             has_injected = seen[injected_column];
             continue;
         }
@@ -142,8 +150,8 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
                 row[c] = parse_cell(fields[position], line_number, column_names[c], ctx);
             }
         }
-        const bool injected = has_injected ? row[injected_column] != 0.0
-                                           : std::fabs(row[3]) > options.injection_threshold;
+        const bool injected =
+            has_injected ? row[injected_column] != 0.0 : std::fabs(row[3]) > options.injection_threshold;
         data.push_back(row[0], row[1], row[2], row[3], row[4], row[5], injected);
     }
     if (in.bad())
@@ -177,9 +185,9 @@ void write_dataset_csv(std::ostream& out, const Dataset& data) {
         out << "# " << key << '=' << value << '\n';
     out << "t,ud,uq,id,iq,omega,injected\n";
     for (std::size_t k = 0; k < data.size(); ++k)
-        out << format_real(data.t[k]) << ',' << format_real(data.ud[k]) << ',' << format_real(data.uq[k]) << ','
-            << format_real(data.id[k]) << ',' << format_real(data.iq[k]) << ',' << format_real(data.omega[k]) << ','
-            << (data.injected[k] ? '1' : '0') << '\n';
+        out << format_real(data.t[k]) << ',' << format_real(data.ud[k]) << ',' << format_real(data.uq[k])
+            << ',' << format_real(data.id[k]) << ',' << format_real(data.iq[k]) << ','
+            << format_real(data.omega[k]) << ',' << (data.injected[k] ? '1' : '0') << '\n';
 }
 
 void write_dataset_csv(const std::string& path, const Dataset& data) {

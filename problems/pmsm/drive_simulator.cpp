@@ -12,7 +12,8 @@
 
 namespace mhb::pmsm {
 
-ControllerGains pole_zero_gains(const MotorParameters& motor, double current_bandwidth, double speed_bandwidth) {
+ControllerGains pole_zero_gains(const MotorParameters& motor, double current_bandwidth,
+                                double speed_bandwidth) {
     ControllerGains g;
     g.kp_d = current_bandwidth * motor.Ld;
     g.ki_d = current_bandwidth * motor.Rs;
@@ -30,7 +31,9 @@ void require(bool ok, const std::string& what) {
         throw std::invalid_argument("pmsm simulator: " + what);
 }
 
-int whole_periods(double duration, double Ts) { return static_cast<int>(std::lround(duration / Ts)); }
+int whole_periods(double duration, double Ts) {
+    return static_cast<int>(std::lround(duration / Ts));
+}
 
 } // namespace
 
@@ -41,9 +44,11 @@ void SimulatorConfig::validate() const {
     require(std::isfinite(condition.speed_rpm) && condition.speed_rpm > 0, "speed must be > 0 rpm");
     require(std::isfinite(condition.load_Nm), "load must be finite");
     require(current_bandwidth > 0 && speed_bandwidth > 0, "bandwidths must be > 0");
-    require(iq_max > 0 && vdc > 0 && Ts > 0 && settle_time >= 0 && plateau > 0, "limits and times must be > 0");
+    require(iq_max > 0 && vdc > 0 && Ts > 0 && settle_time >= 0 && plateau > 0,
+            "limits and times must be > 0");
     require(substeps >= 1 && substeps <= 100000, "substeps must be in [1, 100000]");
-    require(std::isfinite(injection_current) && injection_current != 0.0, "injection current must be non-zero");
+    require(std::isfinite(injection_current) && injection_current != 0.0,
+            "injection current must be non-zero");
     require(samples_per_state >= 1 && samples_per_state <= plateau_steps(),
             "samples per state must be in [1, " + std::to_string(plateau_steps()) + "] (one plateau of " +
                 format_real(plateau) + " s at Ts = " + format_real(Ts) + " s)");
@@ -55,8 +60,12 @@ void SimulatorConfig::validate() const {
     require(std::fabs(condition.load_Nm) < kt * iq_max, "load torque exceeds Kt * iq_max");
 }
 
-int SimulatorConfig::plateau_steps() const { return whole_periods(plateau, Ts); }
-int SimulatorConfig::settle_steps() const { return whole_periods(settle_time, Ts); }
+int SimulatorConfig::plateau_steps() const {
+    return whole_periods(plateau, Ts);
+}
+int SimulatorConfig::settle_steps() const {
+    return whole_periods(settle_time, Ts);
+}
 
 namespace {
 
@@ -86,8 +95,8 @@ void dq_to_abc(double d, double q, double theta, double& a, double& b, double& c
 class Drive {
 public:
     explicit Drive(const SimulatorConfig& config)
-        : cfg_(config), m_(config.motor), gains_(pole_zero_gains(config.motor, config.current_bandwidth,
-                                                                 config.speed_bandwidth)),
+        : cfg_(config), m_(config.motor),
+          gains_(pole_zero_gains(config.motor, config.current_bandwidth, config.speed_bandwidth)),
           current_noise_(mix64(config.seed ^ stable_hash("pmsm current noise"))),
           voltage_noise_(mix64(config.seed ^ stable_hash("pmsm voltage noise"))) {
         omega_ref_ = electrical_speed(cfg_.condition.speed_rpm, m_.pole_pairs);
@@ -195,7 +204,8 @@ private:
         double a = 0, b = 0, c = 0;
         dq_to_abc(s.id, s.iq, s.theta, a, b, c);
         auto sign = [](double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); };
-        abc_to_dq(-dead_voltage_ * sign(a), -dead_voltage_ * sign(b), -dead_voltage_ * sign(c), s.theta, ed, eq);
+        abc_to_dq(-dead_voltage_ * sign(a), -dead_voltage_ * sign(b), -dead_voltage_ * sign(c), s.theta, ed,
+                  eq);
     }
 
     [[nodiscard]] PlantState derivative(const PlantState& s, double ud, double uq) const {
@@ -288,12 +298,14 @@ Dataset simulate_dataset(const SimulatorConfig& config) {
     for (const int end : {end_off, end_on})
         for (int k = end - n; k < end; ++k) {
             const auto i = static_cast<std::size_t>(k);
-            out.push_back(all.t[i], all.ud[i], all.uq[i], all.id[i], all.iq[i], all.omega[i], all.injected[i]);
+            out.push_back(all.t[i], all.ud[i], all.uq[i], all.id[i], all.iq[i], all.omega[i],
+                          all.injected[i]);
         }
 
     const MotorParameters& m = config.motor;
     const ControllerGains& g = drive.gains();
-    out.set_metadata("generator", std::string("mhbench pmsm drive simulator (dq model, speed and current PI loops)"));
+    out.set_metadata("generator",
+                     std::string("mhbench pmsm drive simulator (dq model, speed and current PI loops)"));
     out.set_metadata("Rs", m.Rs);
     out.set_metadata("Ld", m.Ld);
     out.set_metadata("Lq", m.Lq);

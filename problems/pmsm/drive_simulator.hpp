@@ -43,30 +43,31 @@ struct ControllerGains {
     double kp_d = 0, ki_d = 0, kp_q = 0, ki_q = 0; // V/A, V/(A s)
     double kp_w = 0, ki_w = 0;                     // A s/rad, A/rad
 };
-ControllerGains pole_zero_gains(const MotorParameters& motor, double current_bandwidth, double speed_bandwidth);
+ControllerGains pole_zero_gains(const MotorParameters& motor, double current_bandwidth,
+                                double speed_bandwidth);
 
 struct SimulatorConfig {
     MotorParameters motor = paper_motor();
     OperatingCondition condition;
     double current_bandwidth = 3000.0; // wc, rad/s
     double speed_bandwidth = 800.0;    // ws, rad/s
-    double iq_max = 18.0;              // A, limit of the q-current reference (not the rated 4 A, see DESIGN 5)
-    double vdc = 540.0;                // V; the voltage vector is limited to Vdc / sqrt(3)
-    double Ts = 1e-4;                  // control and sampling period, s
-    int substeps = 10;                 // RK4 steps per period
-    double settle_time = 0.2;          // s at id = 0 before the injection starts
-    double plateau = 0.05;             // s per injection state
-    double injection_current = -2.0;   // A
-    int samples_per_state = 300;       // n; at most one plateau's worth of samples
-    double noise_i = 0.0;              // A, standard deviation on the measured id and iq
-    double noise_u = 0.0;              // V, standard deviation on the logged ud and uq
+    double iq_max = 18.0;            // A, limit of the q-current reference (not the rated 4 A, see DESIGN 5)
+    double vdc = 540.0;              // V; the voltage vector is limited to Vdc / sqrt(3)
+    double Ts = 1e-4;                // control and sampling period, s
+    int substeps = 10;               // RK4 steps per period
+    double settle_time = 0.2;        // s at id = 0 before the injection starts
+    double plateau = 0.05;           // s per injection state
+    double injection_current = -2.0; // A
+    int samples_per_state = 300;     // n; at most one plateau's worth of samples
+    double noise_i = 0.0;            // A, standard deviation on the measured id and iq
+    double noise_u = 0.0;            // V, standard deviation on the logged ud and uq
     std::uint64_t seed = 1;
-    int adc_bits = 0;                  // 0: no quantisation
-    double adc_range = 20.0;           // A, the ADC spans [-range, range]
-    double dead_time = 0.0;            // s; 0: ideal inverter
-    int delay_periods = 0;             // 0 or 1: the motor receives the previous period's voltage
-    bool stator_frame_hold = false;    // hold the voltage in the stator frame (a real inverter, no
-                                       // angle compensation) instead of the rotor dq frame
+    int adc_bits = 0;               // 0: no quantisation
+    double adc_range = 20.0;        // A, the ADC spans [-range, range]
+    double dead_time = 0.0;         // s; 0: ideal inverter
+    int delay_periods = 0;          // 0 or 1: the motor receives the previous period's voltage
+    bool stator_frame_hold = false; // hold the voltage in the stator frame (a real inverter, no
+                                    // angle compensation) instead of the rotor dq frame
 
     // Throws std::invalid_argument naming the first bad field.
     void validate() const;

@@ -1,20 +1,19 @@
 #include "problems/pmsm/least_squares.hpp"
 
+#include <Eigen/QR>
+#include <Eigen/SVD>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-
-#include <Eigen/QR>
-#include <Eigen/SVD>
 
 namespace mhb::pmsm {
 namespace {
 
 // Least squares on the columns `free` of A (the others fixed at `fixed_values`), with columns
 // scaled to unit norm and one step of iterative refinement. Returns false if rank-deficient.
-bool solve_subset(const WeightedSystem& sys, const std::array<bool, 4>& free, const Eigen::Vector4d& fixed_values,
-                  Eigen::Vector4d& theta) {
+bool solve_subset(const WeightedSystem& sys, const std::array<bool, 4>& free,
+                  const Eigen::Vector4d& fixed_values, Eigen::Vector4d& theta) {
     std::array<Eigen::Index, 4> cols{};
     Eigen::Index k = 0;
     Eigen::VectorXd rhs = sys.b;
@@ -53,8 +52,9 @@ LeastSquaresResult solve_least_squares(const SteadyStateData& data, const Box* b
     const WeightedSystem sys = weighted_system(data);
     LeastSquaresResult r;
     if (!solve_subset(sys, {true, true, true, true}, Eigen::Vector4d::Zero(), r.theta))
-        throw std::invalid_argument("pmsm: the data (with these weights) do not determine all four parameters; "
-                                    "both injection states need samples with non-zero weights");
+        throw std::invalid_argument(
+            "pmsm: the data (with these weights) do not determine all four parameters; "
+            "both injection states need samples with non-zero weights");
     r.f = data.fitness(r.theta);
 
     // Covariance sigma^2 (A^T W A)^-1, through the column-scaled design for accuracy.
@@ -69,7 +69,8 @@ LeastSquaresResult solve_least_squares(const SteadyStateData& data, const Box* b
     r.condition_number = sv[0] / sv[3];
     const Eigen::Matrix4d v = svd.matrixV();
     const Eigen::Matrix4d scaled_inverse = v * sv.cwiseInverse().cwiseAbs2().asDiagonal() * v.transpose();
-    const Eigen::Matrix4d inverse = scale.cwiseInverse().asDiagonal() * scaled_inverse * scale.cwiseInverse().asDiagonal();
+    const Eigen::Matrix4d inverse =
+        scale.cwiseInverse().asDiagonal() * scaled_inverse * scale.cwiseInverse().asDiagonal();
 
     int m = 0;
     for (Eigen::Index i = 0; i < data.ud.size(); ++i)
@@ -80,7 +81,8 @@ LeastSquaresResult solve_least_squares(const SteadyStateData& data, const Box* b
     r.standard_error = r.covariance.diagonal().cwiseSqrt();
 
     const Eigen::ArrayXd rd = data.ud - r.theta[0] * data.id + r.theta[2] * data.omega_iq;
-    const Eigen::ArrayXd rq = data.uq - r.theta[0] * data.iq - r.theta[1] * data.omega_id - r.theta[3] * data.omega;
+    const Eigen::ArrayXd rq =
+        data.uq - r.theta[0] * data.iq - r.theta[1] * data.omega_id - r.theta[3] * data.omega;
     r.residual_rms_d = std::sqrt(rd.square().mean());
     r.residual_rms_q = std::sqrt(rq.square().mean());
 

@@ -21,7 +21,7 @@ namespace mhb::pmsm {
 
 struct LeastSquaresResult {
     Eigen::Vector4d theta = Eigen::Vector4d::Zero(); // unconstrained optimum (Rs, Ld, Lq, psi)
-    double f = 0.0;                                   // eq. 11 at theta
+    double f = 0.0;                                  // eq. 11 at theta
     Eigen::Matrix4d covariance = Eigen::Matrix4d::Zero();
     Eigen::Vector4d standard_error = Eigen::Vector4d::Zero();
     double sigma2 = 0.0;           // residual variance per unit weight; NaN when m <= 4
@@ -30,7 +30,7 @@ struct LeastSquaresResult {
     double residual_rms_d = 0.0;   // sqrt(mean r_d^2) over the 2n d-axis equations, V
     double residual_rms_q = 0.0;   // the same for the q axis, V
 
-    bool inside_box = true;                                // theta lies in the box given
+    bool inside_box = true;                              // theta lies in the box given
     Eigen::Vector4d box_theta = Eigen::Vector4d::Zero(); // the box-constrained optimum
     double box_f = 0.0;
 };

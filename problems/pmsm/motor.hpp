@@ -8,13 +8,13 @@
 namespace mhb::pmsm {
 
 struct MotorParameters {
-    double Rs = 0.330;     // stator resistance, ohm
-    double Ld = 3.24e-3;   // d-axis inductance, H
-    double Lq = 3.24e-3;   // q-axis inductance, H
-    double psi = 0.0776;   // permanent-magnet flux linkage, Wb
-    int pole_pairs = 2;    // p
-    double J = 0.8e-5;     // rotor inertia, kg m^2
-    double B = 1e-5;       // viscous friction, N m s/rad (not in the paper; small)
+    double Rs = 0.330;   // stator resistance, ohm
+    double Ld = 3.24e-3; // d-axis inductance, H
+    double Lq = 3.24e-3; // q-axis inductance, H
+    double psi = 0.0776; // permanent-magnet flux linkage, Wb
+    int pole_pairs = 2;  // p
+    double J = 0.8e-5;   // rotor inertia, kg m^2
+    double B = 1e-5;     // viscous friction, N m s/rad (not in the paper; small)
 
     // Torque constant Kt = 1.5 p psi (N m/A), amplitude-invariant dq frame.
     [[nodiscard]] double torque_constant() const { return 1.5 * pole_pairs * psi; }
@@ -23,7 +23,9 @@ struct MotorParameters {
 };
 
 // The paper's motor (Table 1): 2.6 kW, 4 A, 380 V, 2500 rpm.
-inline MotorParameters paper_motor() { return MotorParameters{}; }
+inline MotorParameters paper_motor() {
+    return MotorParameters{};
+}
 
 // Where the drive runs: a constant speed reference and a constant load torque.
 struct OperatingCondition {
@@ -34,6 +36,8 @@ struct OperatingCondition {
 inline constexpr double pi = 3.14159265358979323846;
 
 // Electrical angular speed (rad/s) of a mechanical speed in rpm.
-inline double electrical_speed(double speed_rpm, int pole_pairs) { return speed_rpm * 2.0 * pi / 60.0 * pole_pairs; }
+inline double electrical_speed(double speed_rpm, int pole_pairs) {
+    return speed_rpm * 2.0 * pi / 60.0 * pole_pairs;
+}
 
 } // namespace mhb::pmsm

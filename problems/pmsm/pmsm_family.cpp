@@ -19,7 +19,8 @@ void parse_bound(const ParameterValues& p, const char* key, Eigen::Index index, 
     const std::string& text = p.text(key);
     const auto colon = text.find(':');
     double lo = 0, hi = 0;
-    if (colon == std::string::npos || !parse_real(text.substr(0, colon), lo) || !parse_real(text.substr(colon + 1), hi))
+    if (colon == std::string::npos || !parse_real(text.substr(0, colon), lo) ||
+        !parse_real(text.substr(colon + 1), hi))
         throw std::invalid_argument(std::string("pmsm: parameter '") + key + "' = " + text +
                                     " is not of the form lo:hi (two finite numbers, e.g. 0:0.5)");
     if (!(lo < hi))
@@ -41,7 +42,8 @@ std::unique_ptr<Problem> make_pmsm(const ParameterValues& p) {
 
     if (p.has("data")) {
         std::string clash;
-        for (const char* key : {"speed", "load", "noise_i", "noise_u", "seed", "n", "deadtime", "delay", "adc_bits", "hold"})
+        for (const char* key :
+             {"speed", "load", "noise_i", "noise_u", "seed", "n", "deadtime", "delay", "adc_bits", "hold"})
             if (p.given(key))
                 clash += (clash.empty() ? "" : ", ") + std::string(key);
         if (!clash.empty())
@@ -49,8 +51,8 @@ std::unique_ptr<Problem> make_pmsm(const ParameterValues& p) {
                                         ") cannot be given with it");
         pmsm::DatasetReadOptions options;
         options.injection_threshold = p.real("id_threshold");
-        return std::make_unique<pmsm::SteadyStateProblem>(pmsm::read_dataset_csv(p.text("data"), options), weights,
-                                                          std::move(box), evaluation);
+        return std::make_unique<pmsm::SteadyStateProblem>(pmsm::read_dataset_csv(p.text("data"), options),
+                                                          weights, std::move(box), evaluation);
     }
     pmsm::SimulatorConfig config;
     config.condition.speed_rpm = p.real("speed");
@@ -72,10 +74,13 @@ std::unique_ptr<Problem> make_pmsm(const ParameterValues& p) {
 void register_pmsm(ProblemRegistry& registry) {
     registry.add(
         {"pmsm",
-         "PMSM identification of Rs, Ld, Lq, psi from steady-state dq data (eq. 11); f* = exact least squares",
+         "PMSM identification of Rs, Ld, Lq, psi from steady-state dq data (eq. 11); f* = exact least "
+         "squares",
          "Li, Wang and Ji (2017), PMSM parameter identification based on improved TLBO",
-         {ParameterInfo::text("data", "", "dataset CSV (t,ud,uq,id,iq,omega[,injected]); if absent the drive is simulated"),
-          ParameterInfo::real("speed", 2500.0, 0.0, 20000.0, "simulated speed reference, rpm (paper: 2500, 2000)")
+         {ParameterInfo::text(
+              "data", "", "dataset CSV (t,ud,uq,id,iq,omega[,injected]); if absent the drive is simulated"),
+          ParameterInfo::real("speed", 2500.0, 0.0, 20000.0,
+                              "simulated speed reference, rpm (paper: 2500, 2000)")
               .open_below(),
           ParameterInfo::real("load", 2.0, -4.0, 4.0,
                               "simulated load torque, N m (paper: 2, 3; |load| < Kt iq_max = 4.19)"),
@@ -83,22 +88,31 @@ void register_pmsm(ProblemRegistry& registry) {
           ParameterInfo::real("noise_u", 0.0, 0.0, 100.0, "simulated logged-voltage noise (std), V"),
           ParameterInfo::integer("seed", 1, 0, 9007199254740992LL, "seed of the simulated noise"),
           ParameterInfo::integer("n", 300, 2, 500, "simulated samples per injection state (paper: 300)"),
-          ParameterInfo::real("deadtime", 0.0, 0.0, 1e-5, "simulated inverter dead time, s (0: ideal inverter)"),
+          ParameterInfo::real("deadtime", 0.0, 0.0, 1e-5,
+                              "simulated inverter dead time, s (0: ideal inverter)"),
           ParameterInfo::integer("delay", 0, 0, 1, "simulated computation delay, control periods"),
-          ParameterInfo::integer("adc_bits", 0, 0, 24, "simulated phase-current ADC bits over +-20 A (0: off)"),
-          ParameterInfo::choice("hold", "dq", {"dq", "stator"},
-                                "simulated voltage hold: rotor dq frame (ideal) or stator frame (a real inverter "
-                                "without angle compensation: the vector lags by omega Ts / 2)"),
-          ParameterInfo::real("id_threshold", 1.0, 0.0, 1e6,
-                              "with data= and no 'injected' column: |id| above this (A) marks the injected state")
+          ParameterInfo::integer("adc_bits", 0, 0, 24,
+                                 "simulated phase-current ADC bits over +-20 A (0: off)"),
+          ParameterInfo::choice(
+              "hold", "dq", {"dq", "stator"},
+              "simulated voltage hold: rotor dq frame (ideal) or stator frame (a real inverter "
+              "without angle compensation: the vector lags by omega Ts / 2)"),
+          ParameterInfo::real(
+              "id_threshold", 1.0, 0.0, 1e6,
+              "with data= and no 'injected' column: |id| above this (A) marks the injected state")
               .open_below(),
-          ParameterInfo::real("w1", 0.25, 0.0, 1e6, "weight of the d-axis residual, id = 0 state (paper: 0.25)"),
-          ParameterInfo::real("w2", 0.25, 0.0, 1e6, "weight of the q-axis residual, id = 0 state (paper: 0.25)"),
-          ParameterInfo::real("w3", 0.25, 0.0, 1e6, "weight of the d-axis residual, injected state (paper: 0.25)"),
-          ParameterInfo::real("w4", 0.25, 0.0, 1e6, "weight of the q-axis residual, injected state (paper: 0.25)"),
-          ParameterInfo::choice("fitness", "expanded", {"expanded", "direct"},
-                                "how eq. 11 is evaluated: constant-time expansion about the optimum, or the sum "
-                                "over the samples (same function, ~1e-13 relative apart)"),
+          ParameterInfo::real("w1", 0.25, 0.0, 1e6,
+                              "weight of the d-axis residual, id = 0 state (paper: 0.25)"),
+          ParameterInfo::real("w2", 0.25, 0.0, 1e6,
+                              "weight of the q-axis residual, id = 0 state (paper: 0.25)"),
+          ParameterInfo::real("w3", 0.25, 0.0, 1e6,
+                              "weight of the d-axis residual, injected state (paper: 0.25)"),
+          ParameterInfo::real("w4", 0.25, 0.0, 1e6,
+                              "weight of the q-axis residual, injected state (paper: 0.25)"),
+          ParameterInfo::choice(
+              "fitness", "expanded", {"expanded", "direct"},
+              "how eq. 11 is evaluated: constant-time expansion about the optimum, or the sum "
+              "over the samples (same function, ~1e-13 relative apart)"),
           ParameterInfo::text("rs", "0:0.5", "search bounds of Rs, ohm, lo:hi (paper: 0:0.5)"),
           ParameterInfo::text("ld", "0:0.01", "search bounds of Ld, H, lo:hi (paper: 0:0.01)"),
           ParameterInfo::text("lq", "0:0.01", "search bounds of Lq, H, lo:hi (paper: 0:0.01)"),

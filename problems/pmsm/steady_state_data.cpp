@@ -16,12 +16,14 @@ SteadyStateData pair_samples(const Dataset& data, const FitnessWeights& weights)
         state_rows[data.injected[k] ? 1 : 0].push_back(k);
     const std::size_t n = std::min(state_rows[0].size(), state_rows[1].size());
     if (n == 0)
-        throw std::invalid_argument("pmsm: the dataset needs samples in both the id = 0 and the injected state");
+        throw std::invalid_argument(
+            "pmsm: the dataset needs samples in both the id = 0 and the injected state");
 
     SteadyStateData s;
     s.pairs = static_cast<Eigen::Index>(n);
     const Eigen::Index m = 2 * s.pairs;
-    for (Eigen::ArrayXd* a : {&s.ud, &s.uq, &s.id, &s.iq, &s.omega, &s.omega_iq, &s.omega_id, &s.weight_d, &s.weight_q})
+    for (Eigen::ArrayXd* a :
+         {&s.ud, &s.uq, &s.id, &s.iq, &s.omega, &s.omega_iq, &s.omega_id, &s.weight_d, &s.weight_q})
         a->resize(m);
     for (int state = 0; state < 2; ++state)
         for (std::size_t k = 0; k < n; ++k) {

@@ -19,9 +19,9 @@ struct FitnessWeights {
 };
 
 struct SteadyStateData {
-    Eigen::Index pairs = 0; // n
+    Eigen::Index pairs = 0;                                   // n
     Eigen::ArrayXd ud, uq, id, iq, omega, omega_iq, omega_id; // 2n each
-    Eigen::ArrayXd weight_d, weight_q;                       // w1/w3 and w2/w4 per sample
+    Eigen::ArrayXd weight_d, weight_q;                        // w1/w3 and w2/w4 per sample
 
     // Eq. 11 at theta = (Rs, Ld, Lq, psi). No allocation.
     [[nodiscard]] double fitness(const Eigen::Ref<const Eigen::VectorXd>& theta) const {

@@ -4,7 +4,9 @@
 
 namespace mhb::pmsm {
 
-Box paper_bounds() { return Box{Eigen::Vector4d(0.0, 0.0, 0.0, 0.0), Eigen::Vector4d(0.5, 0.01, 0.01, 0.1)}; }
+Box paper_bounds() {
+    return Box{Eigen::Vector4d(0.0, 0.0, 0.0, 0.0), Eigen::Vector4d(0.5, 0.01, 0.01, 0.1)};
+}
 
 SteadyStateProblem::SteadyStateProblem(const Dataset& data, const FitnessWeights& weights, Box bounds,
                                        FitnessEvaluation evaluation)

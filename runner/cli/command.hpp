@@ -19,8 +19,8 @@ struct Command {
 
 // Exit codes shared by every command.
 inline constexpr int exit_ok = 0;
-inline constexpr int exit_failure = 1;    // the work failed (bad data, a failed run, I/O)
-inline constexpr int exit_usage = 2;      // the command line was wrong
+inline constexpr int exit_failure = 1; // the work failed (bad data, a failed run, I/O)
+inline constexpr int exit_usage = 2;   // the command line was wrong
 inline constexpr int exit_interrupted = 130;
 
 } // namespace mhb::cli

@@ -1,10 +1,6 @@
 // `mhbench eval --problem SPEC --points FILE`: prints f at each point of FILE, one value a line,
 // at full precision (the shortest text that reads back to the same double), so that anyone can
 // check a function by hand against another implementation.
-#include "problems/parameters.hpp"
-#include "problems/problem_registry.hpp"
-#include "runner/cli/command.hpp"
-
 #include <boost/program_options.hpp>
 #include <fstream>
 #include <iostream>
@@ -12,6 +8,10 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "problems/parameters.hpp"
+#include "problems/problem_registry.hpp"
+#include "runner/cli/command.hpp"
 
 namespace mhb::cli {
 namespace {

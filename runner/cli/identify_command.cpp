@@ -58,13 +58,15 @@ int run_identify_command(const std::vector<std::string>& args) {
         "header t,ud,uq,id,iq,omega[,injected] in s, V, V, A, A, electrical rad/s; samples of the\n"
         "id = 0 state and of the injected state (the 'injected' column, or |id| above a threshold).\n\n"
         "Usage: mhbench identify --data FILE [options]\n\nOptions");
-    options.add_options()                                                                        //
-        ("help,h", "this text")                                                                  //
-        ("data,d", po::value<std::string>(&data_path), "dataset CSV; required")                  //
+    // clang-format off
+    options.add_options()
+        ("help,h", "this text")
+        ("data,d", po::value<std::string>(&data_path), "dataset CSV; required")
         ("weights", po::value<std::string>(&weights_text)->default_value(weights_text),
-         "w1,w2,w3,w4 of eq. 11: d and q residuals of the id = 0 state, then of the injected state") //
+         "w1,w2,w3,w4 of eq. 11: d and q residuals of the id = 0 state, then of the injected state")
         ("id-threshold", po::value<double>(&threshold)->default_value(1.0),
          "without an 'injected' column, |id| above this (A) marks the injected state");
+    // clang-format on
     po::variables_map vm;
     po::store(po::command_line_parser(args).options(options).run(), vm);
     if (vm.count("help") != 0) {
@@ -90,8 +92,8 @@ int run_identify_command(const std::vector<std::string>& args) {
     out << "PMSM steady-state identification (least squares on eq. 11 of Li, Wang and Ji 2017)\n"
         << "data:    " << data_path << ": " << data.size() << " samples, " << off << " at id = 0 and " << on
         << " injected; " << samples.pairs << " pairs used\n"
-        << "weights: " << format_real(weights.w1) << ' ' << format_real(weights.w2) << ' ' << format_real(weights.w3)
-        << ' ' << format_real(weights.w4) << "\n\n";
+        << "weights: " << format_real(weights.w1) << ' ' << format_real(weights.w2) << ' '
+        << format_real(weights.w3) << ' ' << format_real(weights.w4) << "\n\n";
     const char* names[] = {"Rs  [ohm]", "Ld  [H]  ", "Lq  [H]  ", "psi [Wb] "};
     out << "parameter   estimate        std. error      (% of est.)";
     if (truth)
@@ -99,8 +101,8 @@ int run_identify_command(const std::vector<std::string>& args) {
     out << '\n';
     for (int j = 0; j < 4; ++j) {
         char buf[240];
-        std::snprintf(buf, sizeof buf, "%s   %-14.8g  %-14.4g  %9.3g %%", names[j], r.theta[j], r.standard_error[j],
-                      100.0 * r.standard_error[j] / std::fabs(r.theta[j]));
+        std::snprintf(buf, sizeof buf, "%s   %-14.8g  %-14.4g  %9.3g %%", names[j], r.theta[j],
+                      r.standard_error[j], 100.0 * r.standard_error[j] / std::fabs(r.theta[j]));
         out << buf;
         if (truth) {
             std::snprintf(buf, sizeof buf, "     %-14.8g  %+9.3g %%", (*truth)[j],
@@ -118,11 +120,13 @@ int run_identify_command(const std::vector<std::string>& args) {
                 static_cast<double>(r.equations), r.condition_number, correlation);
     if (truth) {
         char buf[200];
-        std::snprintf(buf, sizeof buf, "f at the true values = %.10g (f - f* = %.4g: how far the data move the optimum)\n",
+        std::snprintf(buf, sizeof buf,
+                      "f at the true values = %.10g (f - f* = %.4g: how far the data move the optimum)\n",
                       samples.fitness(*truth), samples.fitness(*truth) - r.f);
         out << buf;
     }
-    out << "\nStandard errors are sigma^2 (A^T W A)^-1 from the residual: they measure how far noise alone can\n"
+    out << "\nStandard errors are sigma^2 (A^T W A)^-1 from the residual: they measure how far noise alone "
+           "can\n"
            "move the estimate (one sigma), assuming independent residuals. They do not cover systematic\n"
            "errors - inverter dead time and delay, a voltage offset - which bias Rs above all: its only\n"
            "signal is Rs id in ud (about 0.66 V at -2 A), and Rs and psi are strongly correlated.\n";
@@ -130,7 +134,8 @@ int run_identify_command(const std::vector<std::string>& args) {
         if (r.theta[j] <= 0)
             out << "warning: " << names[j] << " came out non-positive: the data do not support the model\n";
     if (!pmsm::paper_bounds().contains(r.theta))
-        out << "note: the estimate lies outside the paper's search box (Rs 0-0.5, Ld and Lq 0-0.01, psi 0-0.1); an\n"
+        out << "note: the estimate lies outside the paper's search box (Rs 0-0.5, Ld and Lq 0-0.01, psi "
+               "0-0.1); an\n"
                "optimiser confined to that box cannot reach it (pmsm: reports the box-constrained optimum)\n";
     if (r.standard_error[0] > 0.1 * std::fabs(r.theta[0]))
         out << "warning: Rs is determined to worse than 10 %; a larger injection or more samples help\n";

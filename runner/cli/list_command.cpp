@@ -1,17 +1,17 @@
 // `mhbench list [algorithms|problems|studies]`: what can be named in a study, with each entry's
 // summary, reference and parameters (default, allowed values, meaning). Printed straight from
 // the registries' declarations, so it can never disagree with what the code accepts.
-#include "algorithms/algorithm_registry.hpp"
-#include "problems/problem_registry.hpp"
-#include "runner/cli/command.hpp"
-#include "runner/study_presets.hpp"
-
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "problems/problem_registry.hpp"
+#include "runner/cli/command.hpp"
+#include "runner/study_presets.hpp"
 
 namespace mhb::cli {
 namespace po = boost::program_options;

@@ -29,7 +29,8 @@ const std::vector<Command>& commands() {
         {"list", "list algorithms, problems and study presets with their parameters", run_list_command},
         {"report", "tables, statistics, curve data and figures of a finished study", run_report_command},
         {"simulate", "simulate the paper's drive and write a dataset CSV", run_simulate_command},
-        {"identify", "least-squares Rs, Ld, Lq, psi with standard errors from a dataset CSV", run_identify_command},
+        {"identify", "least-squares Rs, Ld, Lq, psi with standard errors from a dataset CSV",
+         run_identify_command},
         {"eval", "print f at given points (check a function by hand)", run_eval_command},
     };
     return table;

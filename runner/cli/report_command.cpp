@@ -1,12 +1,12 @@
 // `mhbench report DIR`: rebuilds every table, the curve data and the figures of a finished study
 // from its directory alone. Thin: parses the command line, loads the study, calls build_report.
-#include "results/report.hpp"
-#include "results/store.hpp"
-#include "runner/cli/command.hpp"
-
 #include <boost/program_options.hpp>
 #include <iostream>
 #include <sstream>
+
+#include "results/report.hpp"
+#include "results/store.hpp"
+#include "runner/cli/command.hpp"
 
 namespace mhb::cli {
 

@@ -1,17 +1,6 @@
 // `mhbench run`: describe a study (options, a preset, or a study file), validate all of it,
 // run it in parallel into a study directory, and print a short summary. Ctrl-C stops starting
 // new runs, keeps the finished ones, and the same command resumes.
-#include "problems/spec.hpp"
-#include "results/store.hpp"
-#include "results/report.hpp"
-#include "runner/cli/command.hpp"
-#include "runner/context.hpp"
-#include "runner/parallel_runner.hpp"
-#include "runner/progress.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
-#include "runner/study_presets.hpp"
-
 #include <atomic>
 #include <boost/program_options.hpp>
 #include <chrono>
@@ -24,6 +13,17 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "problems/spec.hpp"
+#include "results/report.hpp"
+#include "results/store.hpp"
+#include "runner/cli/command.hpp"
+#include "runner/context.hpp"
+#include "runner/parallel_runner.hpp"
+#include "runner/progress.hpp"
+#include "runner/study.hpp"
+#include "runner/study_file.hpp"
+#include "runner/study_presets.hpp"
 
 namespace mhb::cli {
 namespace po = boost::program_options;

@@ -4,12 +4,12 @@
 // optimisers' own overhead can be compared with the cost of the problems they solve.
 //
 //   build/release/tests/bench/algorithms_bench --benchmark_min_time=0.5
+#include <benchmark/benchmark.h>
+#include <string>
+
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem_registry.hpp"
-
-#include <benchmark/benchmark.h>
-#include <string>
 
 namespace {
 

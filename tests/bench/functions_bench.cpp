@@ -3,14 +3,14 @@
 // once, outside the timed loop, so this also shows that no rotation is recomputed per evaluation
 // (a rotated evaluation costs one D x D product, not a QR). Results go to BENCHMARKS.md.
 //   build/release/tests/bench/functions_bench --benchmark_min_time=0.1
-#include "problems/functions/classic_function.hpp"
-#include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
-
 #include <benchmark/benchmark.h>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "problems/functions/classic_function.hpp"
+#include "problems/problem_registry.hpp"
+#include "problems/rng.hpp"
 
 namespace {
 

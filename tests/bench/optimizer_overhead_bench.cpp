@@ -5,14 +5,14 @@
 //                         of the problem plus the Objective's counting, repair and trace.
 // An optimiser's overhead per evaluation is per_eval(optimizer) - per_eval(objective_only).
 // Run: build/release/tests/bench/optimizer_overhead_bench --benchmark_min_time=0.5
+#include <benchmark/benchmark.h>
+#include <string>
+#include <vector>
+
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/sampling.hpp"
 #include "problems/problem_registry.hpp"
 #include "tests/unit/algorithms/baselines_test_problems.hpp" // baseline_specs(): the optimisers the tests cover
-
-#include <benchmark/benchmark.h>
-#include <string>
-#include <vector>
 
 namespace mhb {
 namespace {

@@ -1,6 +1,7 @@
 // Speed of the PMSM identification problem: one eq. 11 evaluation at n = 300 pairs (the hot loop
-// of every PMSM study; expanded and direct forms), the expanded one through the counted Objective, the least-squares reference, and
-// the drive simulator making the default dataset (0.4 s of drive at Ts = 100 us, RK4 at 10 us).
+// of every PMSM study; expanded and direct forms), the expanded one through the counted Objective, the
+// least-squares reference, and the drive simulator making the default dataset (0.4 s of drive at Ts = 100 us,
+// RK4 at 10 us).
 #include <benchmark/benchmark.h>
 
 #include "problems/objective.hpp"
@@ -28,7 +29,8 @@ std::vector<Eigen::VectorXd> sample_points(const Box& box, int count) {
 
 // Arg 0: the default constant-time expansion; arg 1: the direct sum over the 600 samples.
 void BM_PmsmFitness300(benchmark::State& state) {
-    const auto evaluation = state.range(0) == 0 ? pmsm::FitnessEvaluation::expanded : pmsm::FitnessEvaluation::direct;
+    const auto evaluation =
+        state.range(0) == 0 ? pmsm::FitnessEvaluation::expanded : pmsm::FitnessEvaluation::direct;
     const pmsm::SteadyStateProblem problem(pmsm::simulate_dataset({}), {}, pmsm::paper_bounds(), evaluation);
     const auto points = sample_points(problem.bounds(), 64);
     std::size_t i = 0;

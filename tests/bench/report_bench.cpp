@@ -1,13 +1,13 @@
 // How long `mhbench report` takes (without figures) for a study the size of the paper's: 3
 // algorithms x 20 runs x 151 iterations on one PMSM problem with 4 named parameters, plus the
 // rank-sum test at the paper's 20-vs-20 size (exact null distribution).
-#include "results/hypothesis_tests.hpp"
-#include "results/report.hpp"
-#include "results/store.hpp"
-
 #include <benchmark/benchmark.h>
 #include <filesystem>
 #include <sstream>
+
+#include "results/hypothesis_tests.hpp"
+#include "results/report.hpp"
+#include "results/store.hpp"
 
 namespace {
 namespace fs = std::filesystem;

@@ -7,16 +7,16 @@
 //
 // Counters: runs/s and evaluations/s of the whole study, so figures for presets of different
 // sizes compare.
+#include <benchmark/benchmark.h>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
 #include "results/store.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
 #include "runner/study_presets.hpp"
-
-#include <benchmark/benchmark.h>
-#include <cstdlib>
-#include <filesystem>
-#include <string>
 
 namespace {
 

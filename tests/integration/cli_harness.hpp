@@ -3,11 +3,10 @@
 // tests that CTest runs in parallel never share them.
 #pragma once
 
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -47,7 +46,8 @@ inline std::filesystem::path scratch_directory() {
 // Runs a shell command line and collects what it printed.
 inline CliResult run_shell(const std::string& command) {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::string name = info != nullptr ? std::string(info->test_suite_name()) + "." + info->name() : "none";
+    const std::string name =
+        info != nullptr ? std::string(info->test_suite_name()) + "." + info->name() : "none";
     const auto out = scratch_directory() / (name + ".stdout");
     const auto err = scratch_directory() / (name + ".stderr");
     const std::string line = "(" + command + ") >'" + out.string() + "' 2>'" + err.string() + "'";

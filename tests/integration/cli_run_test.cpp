@@ -19,15 +19,18 @@
 namespace {
 
 // The registries' own lists, so the expectations follow as components are added.
-template <class Registry>
-std::string known_names(const Registry& registry) {
+template <class Registry> std::string known_names(const Registry& registry) {
     std::string names;
     for (const auto& e : registry.entries())
         names += (names.empty() ? "" : ", ") + e.name;
     return names;
 }
-std::string known_algorithm_names() { return known_names(mhb::builtin_algorithms()); }
-std::string known_problem_names() { return known_names(mhb::builtin_problems()); }
+std::string known_algorithm_names() {
+    return known_names(mhb::builtin_algorithms());
+}
+std::string known_problem_names() {
+    return known_names(mhb::builtin_problems());
+}
 std::string known_study_names() {
     std::string names;
     for (const auto& p : mhb::study_presets())
@@ -43,7 +46,9 @@ using mhb::testing_cli::read_text;
 using Result = mhb::testing_cli::CliResult;
 using mhb::testing_cli::run_shell;
 
-Result mhbench(const std::string& args) { return mhb::testing_cli::run_mhbench(args); }
+Result mhbench(const std::string& args) {
+    return mhb::testing_cli::run_mhbench(args);
+}
 
 fs::path fresh(const std::string& name) {
     const fs::path dir = work / name;
@@ -82,7 +87,9 @@ TEST(CliRun, OneAndTwoThreadsGiveByteIdenticalResults) {
 TEST(CliRun, StudyFileRunsTheSameStudyAgain) {
     const fs::path first = fresh("original");
     const fs::path again = fresh("from_file");
-    ASSERT_EQ(mhbench("run " + small_study + " --no-report --threads 2 --quiet --out " + first.string()).exit_code, 0);
+    ASSERT_EQ(
+        mhbench("run " + small_study + " --no-report --threads 2 --quiet --out " + first.string()).exit_code,
+        0);
     const Result r = mhbench("run --no-report --study-file " + (first / "study.ini").string() +
                              " --threads 1 --quiet --out " + again.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -91,8 +98,8 @@ TEST(CliRun, StudyFileRunsTheSameStudyAgain) {
         EXPECT_EQ(read_text(first / name), read_text(again / name)) << name;
     // Options override the file: another seed gives another study with other results.
     const fs::path other = fresh("other_seed");
-    ASSERT_EQ(mhbench("run --no-report --study-file " + (first / "study.ini").string() + " --seed 10 --quiet --out " +
-                      other.string())
+    ASSERT_EQ(mhbench("run --no-report --study-file " + (first / "study.ini").string() +
+                      " --seed 10 --quiet --out " + other.string())
                   .exit_code,
               0);
     EXPECT_NE(read_text(first / "runs.csv"), read_text(other / "runs.csv"));
@@ -100,7 +107,8 @@ TEST(CliRun, StudyFileRunsTheSameStudyAgain) {
 
 TEST(CliRun, PresetsRunAndOptionsOverrideThem) {
     const fs::path dir = fresh("smoke");
-    const Result r = mhbench("run --study smoke --runs 3 --evaluations 200 --no-report --quiet --out " + dir.string());
+    const Result r =
+        mhbench("run --study smoke --runs 3 --evaluations 200 --no-report --quiet --out " + dir.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string ini = read_text(dir / "study.ini");
     EXPECT_NE(ini.find("algorithm = random-search\nproblem = sphere:dim=5\nruns = 3\n"), std::string::npos)

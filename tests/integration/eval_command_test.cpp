@@ -1,16 +1,16 @@
 // `mhbench eval` end to end: it prints, in another process, exactly the values the library
 // computes (so instances are the same across processes), matches COCO's reference values, and
 // names file, line and column for bad input.
-#include "problems/parameters.hpp"
-#include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
-
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
+
+#include "problems/parameters.hpp"
+#include "problems/problem_registry.hpp"
+#include "problems/rng.hpp"
 
 namespace mhb {
 namespace {

@@ -2,18 +2,17 @@
 // steady-state problem), run as a real study by the parallel runner: each run spends the
 // evaluation budget exactly, no run fails, and the study's records are byte-identical for one and
 // two threads.
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+#include <unistd.h>
+
 #include "algorithms/algorithm_registry.hpp"
 #include "results/store.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
-
-#include <gtest/gtest.h>
-
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 namespace mhb {
 namespace {
@@ -38,8 +37,8 @@ Study every_optimizer_study() {
 }
 
 fs::path run_with_threads(const PreparedStudy& prepared, int threads) {
-    const fs::path dir = fs::temp_directory_path() /
-                         ("mhb_every_optimizer_" + std::to_string(::getpid()) + "_" + std::to_string(threads));
+    const fs::path dir = fs::temp_directory_path() / ("mhb_every_optimizer_" + std::to_string(::getpid()) +
+                                                      "_" + std::to_string(threads));
     fs::remove_all(dir);
     StudyWriter writer(dir, study_ini(prepared.study), "", prepared.parameter_columns, false);
     RunnerOptions options;

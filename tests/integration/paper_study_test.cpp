@@ -2,12 +2,12 @@
 // `mhbench run --study paper` prints Tables 2 and 3 beside the published numbers and writes the
 // report; the tables agree with the run records; and the study's records are byte-identical for
 // one and two threads.
-#include "cli_harness.hpp"
-#include "results/csv.hpp"
-
 #include <cmath>
 #include <filesystem>
 #include <map>
+
+#include "cli_harness.hpp"
+#include "results/csv.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -37,11 +37,11 @@ TEST(PaperStudy, PrintsTablesTwoAndThreeThatAgreeWithTheRunRecords) {
     EXPECT_NE(r.out.find("Table 2"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("Table 3"), std::string::npos);
     for (const char* published : {"3.9904", "0.0725", "4.9905", "1.6258", "5.5904", "1.6625", // Table 2
-                                  "0.3325", "0.00363", "0.0763"})                              // Table 3
+                                  "0.3325", "0.00363", "0.0763"})                             // Table 3
         EXPECT_NE(r.out.find(published), std::string::npos) << published;
-    for (const char* file : {"table2_fitness.md", "table2_fitness.tex", "table2_fitness.csv", "table3_parameters.md",
-                             "table3_parameters.tex", "table3_parameters.csv", "curves_iteration.csv",
-                             "parameters_iteration.csv"})
+    for (const char* file : {"table2_fitness.md", "table2_fitness.tex", "table2_fitness.csv",
+                             "table3_parameters.md", "table3_parameters.tex", "table3_parameters.csv",
+                             "curves_iteration.csv", "parameters_iteration.csv"})
         EXPECT_TRUE(fs::exists(dir / "report" / file)) << file;
 
     // Table 2 (CSV, full precision) against the run records: the mean final fitness and the

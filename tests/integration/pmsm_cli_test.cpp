@@ -1,10 +1,9 @@
 // End-to-end tests of `mhbench simulate` and `mhbench identify` (runner/cli/simulate_command.cpp,
 // identify_command.cpp): files written, read back, exit codes and one-line errors.
-#include <gtest/gtest.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 #include <string>
 
@@ -70,8 +69,8 @@ TEST(PmsmCli, SimulateErrorsAreOneLineWithNonZeroExit) {
 // identify on the shared noisy file prints the least-squares optimum of expected.csv
 // (Rs_ls = 0.35919398646..., psi_ls = 0.07691100150...) and the errors against the truth.
 TEST(PmsmCli, IdentifyReportsTheLeastSquaresEstimate) {
-    const Result r =
-        run_cli("identify --data " + std::string(MHB_TEST_DATA_DIR) + "/pmsm/pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
+    const Result r = run_cli("identify --data " + std::string(MHB_TEST_DATA_DIR) +
+                             "/pmsm/pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("0.35919399"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("0.076911002"), std::string::npos) << r.output;

@@ -1,9 +1,6 @@
 // `mhbench report` end to end through the executable: a finished study gives the tables on stdout
 // and exit 0; a damaged study or a bad option gives exactly one line on stderr naming the problem
 // and a non-zero exit (1 for bad data, 2 for a bad command line).
-#include "cli_harness.hpp"
-#include "results/store.hpp"
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +8,9 @@
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "cli_harness.hpp"
+#include "results/store.hpp"
 
 namespace mhb {
 namespace {
@@ -29,7 +29,9 @@ struct TemporaryPaths {
 using Outcome = mhb::testing_cli::CliResult;
 using mhb::testing_cli::read_text;
 
-Outcome run_cli(const std::string& arguments) { return mhb::testing_cli::run_mhbench(arguments); }
+Outcome run_cli(const std::string& arguments) {
+    return mhb::testing_cli::run_mhbench(arguments);
+}
 
 fs::path small_study(const std::string& name) {
     const fs::path dir =

@@ -5,16 +5,16 @@
 // evaluations; BOBYQA: 1e-9 relative on the steady-state quadratic) or the usual published
 // behaviour of the method, set about 100x looser than what these seeds reach, so that a broken
 // update (a wrong constant, a sign) fails them and rounding differences do not.
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/sampling.hpp"
-#include "baselines_test_problems.hpp"
-#include "problems/problem_registry.hpp"
-
 #include <algorithm>
 #include <gtest/gtest.h>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/sampling.hpp"
+#include "baselines_test_problems.hpp"
+#include "problems/problem_registry.hpp"
 
 namespace mhb {
 namespace {

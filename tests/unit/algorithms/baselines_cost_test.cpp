@@ -3,10 +3,10 @@
 // Figures at D = 5 with defaults: DE NP = 10 D = 50; CMA-ES lambda = 4 + floor(3 ln 5) = 8;
 // SPSO 2011 S = 40; Jaya NP = 50; ETLBO 2 NP = 100 plus one per duplicate; NLopt 100 per iteration
 // (the first evaluation is iteration 0); L-SHADE 18 D = 90 at first.
+#include <gtest/gtest.h>
+
 #include "baselines_test_problems.hpp"
 #include "problems/problem_registry.hpp"
-
-#include <gtest/gtest.h>
 
 namespace mhb {
 namespace {

@@ -1,13 +1,13 @@
 // Bad configuration is a clear error naming the component, the parameter and the rule; an error
 // inside the objective comes out of every optimiser with its own message (NLopt's C++ wrapper would
 // otherwise turn it into a bare "nlopt failure").
-#include "algorithms/algorithm_registry.hpp"
-#include "baselines_test_problems.hpp"
-#include "problems/problem_registry.hpp"
-
 #include <gtest/gtest.h>
 #include <stdexcept>
 #include <string>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "baselines_test_problems.hpp"
+#include "problems/problem_registry.hpp"
 
 namespace mhb {
 namespace {

@@ -4,16 +4,16 @@
 // the same results when runs are spread over 2 threads as when they run one after another (NLopt's
 // thread-local random generator is the usual way to lose that).
 // The lead adds the real `pmsm` and `rastrigin` specs, and the runner's 1-vs-2-thread check, on merge.
-#include "algorithms/algorithm_registry.hpp"
-#include "baselines_test_problems.hpp"
-#include "problems/problem_registry.hpp"
-
 #include <gtest/gtest.h>
 #include <memory>
 #include <string>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "baselines_test_problems.hpp"
+#include "problems/problem_registry.hpp"
 
 namespace mhb {
 namespace {

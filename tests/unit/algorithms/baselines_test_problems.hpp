@@ -4,15 +4,15 @@
 // least-squares structure, eq. 2 and 11 of the ITLBO paper, with its exact optimum from QR).
 #pragma once
 
-#include "algorithms/algorithm_registry.hpp"
-#include "problems/problem.hpp"
-#include "problems/rng.hpp"
-
 #include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "problems/problem.hpp"
+#include "problems/rng.hpp"
 
 namespace mhb::test {
 

@@ -6,9 +6,9 @@
 //   PSO   400 iterations (20050 evaluations):                     worst 2e-18;        asserted 1e-12.
 // A regression that breaks a phase (a wrong sign, a lost greedy step) misses these by many
 // orders of magnitude.
-#include "tests/unit/algorithms/paper_algorithms_support.hpp"
-
 #include <gtest/gtest.h>
+
+#include "tests/unit/algorithms/paper_algorithms_support.hpp"
 
 namespace mhb::test {
 namespace {

@@ -3,10 +3,10 @@
 // reference written from the papers; ITLBO's stepwise learning changes one component at a time and
 // keeps it only if it improves; ITLBO's mutation evaluates lo + hi - X_i of the learner as
 // learning left it; PSO's first move from zero velocity heads for the global best.
-#include "tests/unit/algorithms/paper_algorithms_support.hpp"
-
 #include <cmath>
 #include <gtest/gtest.h>
+
+#include "tests/unit/algorithms/paper_algorithms_support.hpp"
 
 namespace mhb::test {
 namespace {

@@ -3,14 +3,14 @@
 // it is asked to evaluate (so tests can check what an optimiser evaluated, in order).
 #pragma once
 
-#include "algorithms/algorithm_registry.hpp"
-#include "problems/objective.hpp"
-#include "problems/problem_registry.hpp"
-
 #include <cstdint>
 #include <gtest/gtest.h>
 #include <string>
 #include <vector>
+
+#include "algorithms/algorithm_registry.hpp"
+#include "problems/objective.hpp"
+#include "problems/problem_registry.hpp"
 
 namespace mhb::test {
 

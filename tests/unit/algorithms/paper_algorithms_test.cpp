@@ -1,10 +1,10 @@
 // The paper's algorithms (TLBO, ITLBO of Li, Wang, Ji 2017, PSO): ITLBO with its switches off
 // is TLBO bit for bit; evaluations per iteration follow the formulas of DESIGN.md section 4;
 // each switch changes the run; runs are reproducible; bad parameters are clear errors.
-#include "tests/unit/algorithms/paper_algorithms_support.hpp"
-
 #include <gtest/gtest.h>
 #include <stdexcept>
+
+#include "tests/unit/algorithms/paper_algorithms_support.hpp"
 
 namespace mhb::test {
 namespace {

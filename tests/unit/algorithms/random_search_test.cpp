@@ -1,11 +1,11 @@
 // Random search: exact evaluation accounting, samples uniform inside the box, reproducible from
 // the seed, and the expected accuracy on a sphere.
+#include <cmath>
+#include <gtest/gtest.h>
+
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem_registry.hpp"
-
-#include <cmath>
-#include <gtest/gtest.h>
 
 namespace mhb {
 namespace {

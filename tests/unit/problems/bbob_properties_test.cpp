@@ -2,14 +2,14 @@
 // the reference vectors: f(x_opt) = f_opt, x_opt in the box, no random point (inside or outside
 // the box) below f_opt,
 // f_opt on COCO's grid, instances that differ, the suite pattern, and thread-safety.
-#include "problems/bbob/bbob_random.hpp"
-#include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
-
 #include <cmath>
 #include <gtest/gtest.h>
 #include <set>
 #include <thread>
+
+#include "problems/bbob/bbob_random.hpp"
+#include "problems/problem_registry.hpp"
+#include "problems/rng.hpp"
 
 namespace mhb {
 namespace {

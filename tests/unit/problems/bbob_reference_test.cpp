@@ -3,13 +3,13 @@
 // tests/data/bbob_public_sample.csv (copied from shared/testdata; columns function, dimension,
 // instance, point id, x (space-separated), f, f_opt): 3 points for each of the 24 functions in
 // dimensions 2 and 10, instance 1; the reported f* must also be COCO's f_opt exactly.
-#include "problems/problem_registry.hpp"
-#include "results/csv.hpp"
-
 #include <cmath>
 #include <gtest/gtest.h>
 #include <set>
 #include <sstream>
+
+#include "problems/problem_registry.hpp"
+#include "results/csv.hpp"
 
 namespace mhb {
 namespace {

@@ -3,14 +3,14 @@
 // function's formula (the simple ones) or computed with an independent Python implementation of
 // the formula as printed in its reference (Yao, Liu, Lin 1999 table I; CEC 2005 for Weierstrass;
 // Surjanovic and Bingham for Levy), using Python's math module.
-#include "problems/functions/classic_function.hpp"
-#include "problems/problem_registry.hpp"
-
 #include <array>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <initializer_list>
 #include <map>
+
+#include "problems/functions/classic_function.hpp"
+#include "problems/problem_registry.hpp"
 
 namespace mhb {
 namespace {

@@ -1,8 +1,8 @@
 // Bad names and parameters of the test-function families are clear errors that name the
 // component, the parameter, the value and what is allowed.
-#include "problems/problem_registry.hpp"
-
 #include <gtest/gtest.h>
+
+#include "problems/problem_registry.hpp"
 
 namespace mhb {
 namespace {

@@ -1,15 +1,15 @@
 // Shifted and rotated instances of the classic functions: the optimum moves where the instance
 // says, the variant is exactly f(Q (x - c) + x*), the rotation is a rotation, the optimum stays the
 // global one (random points never beat it), and instances are the same across runs and threads.
-#include "problems/functions/classic_function.hpp"
-#include "problems/functions/instance_transform.hpp"
-#include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
-
 #include <Eigen/LU>
 #include <gtest/gtest.h>
 #include <thread>
 #include <vector>
+
+#include "problems/functions/classic_function.hpp"
+#include "problems/functions/instance_transform.hpp"
+#include "problems/problem_registry.hpp"
+#include "problems/rng.hpp"
 
 namespace mhb {
 namespace {

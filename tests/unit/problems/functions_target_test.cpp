@@ -1,10 +1,10 @@
 // Known optima make target-based stopping work on every test function: a run that reaches
 // f - f* <= target stops and records the evaluations it took. Also the centre-bias study's list.
+#include <gtest/gtest.h>
+
 #include "problems/functions/classic_function.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem_registry.hpp"
-
-#include <gtest/gtest.h>
 
 namespace mhb {
 namespace {

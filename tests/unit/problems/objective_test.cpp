@@ -7,7 +7,9 @@
 namespace mhb {
 namespace {
 
-std::unique_ptr<Problem> sphere(int dim) { return builtin_problems().create("sphere:dim=" + std::to_string(dim)); }
+std::unique_ptr<Problem> sphere(int dim) {
+    return builtin_problems().create("sphere:dim=" + std::to_string(dim));
+}
 
 TEST(Objective, CountsEveryEvaluationAndKeepsTheBest) {
     const auto p = sphere(2);

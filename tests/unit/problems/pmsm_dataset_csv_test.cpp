@@ -1,7 +1,6 @@
 // Tests of the PMSM dataset CSV reader and writer (problems/pmsm/dataset_csv.*): every malformed
 // file gives one error naming the file, the line and the column.
 #include <gtest/gtest.h>
-
 #include <sstream>
 #include <string>
 
@@ -12,13 +11,12 @@ namespace mhb::pmsm {
 namespace {
 
 // Header on line 2, data rows on lines 3..6 (two in each state).
-const std::string good =
-    "# Rs=0.33\n"
-    "t,ud,uq,id,iq,omega\n"
-    "0,-14.5,43.4,0,8.6,523.6\n"
-    "0.0001,-14.5,43.4,0,8.6,523.6\n"
-    "0.0002,-15.1,40.0,-2,8.6,523.6\n"
-    "0.0003,-15.1,40.0,-2,8.6,523.6\n";
+const std::string good = "# Rs=0.33\n"
+                         "t,ud,uq,id,iq,omega\n"
+                         "0,-14.5,43.4,0,8.6,523.6\n"
+                         "0.0001,-14.5,43.4,0,8.6,523.6\n"
+                         "0.0002,-15.1,40.0,-2,8.6,523.6\n"
+                         "0.0003,-15.1,40.0,-2,8.6,523.6\n";
 
 std::string error_of(const std::string& text) {
     std::istringstream in(text);
@@ -73,9 +71,11 @@ TEST(PmsmDatasetCsv, ErrorsNameFileLineAndColumn) {
     EXPECT_EQ(error_of(replace_line(good, 3, "0,-14.5,,0,8.6,523.6")),
               "drive.csv: line 3, column 'uq': the field is empty");
     EXPECT_EQ(error_of(replace_line(good, 2, "t,ud,uq,id,iq")),
-              "drive.csv: line 2, column 'omega' is missing from the header (expected t,ud,uq,id,iq,omega[,injected])");
-    EXPECT_EQ(error_of(replace_line(good, 2, "t,ud,uq,id,iq,omega,speed")),
-              "drive.csv: line 2, column 7: unknown column 'speed' (expected t,ud,uq,id,iq,omega[,injected])");
+              "drive.csv: line 2, column 'omega' is missing from the header (expected "
+              "t,ud,uq,id,iq,omega[,injected])");
+    EXPECT_EQ(
+        error_of(replace_line(good, 2, "t,ud,uq,id,iq,omega,speed")),
+        "drive.csv: line 2, column 7: unknown column 'speed' (expected t,ud,uq,id,iq,omega[,injected])");
     EXPECT_EQ(error_of(replace_line(good, 2, "t,ud,uq,id,iq,omega,ud")),
               "drive.csv: line 2, column 7: column 'ud' appears twice");
     EXPECT_EQ(error_of("t,ud,uq,id,iq,omega,injected\n0,1,2,0,8,500,0\n0,1,2,0,8,500,2\n"),
@@ -86,10 +86,12 @@ TEST(PmsmDatasetCsv, ErrorsNameFileLineAndColumn) {
     EXPECT_EQ(error_of(replace_line(replace_line(good, 5, "0.0002,-15.1,40.0,-0.5,8.6,523.6"), 6,
                                     "0.0003,-15.1,40.0,-0.5,8.6,523.6")),
               "drive.csv: line 6, column 'id': no samples in the injected state (by |id| > 1 A)");
-    EXPECT_EQ(error_of("t,ud,uq,id,iq,omega,injected\n0,1,2,0,8,500,1\n0,1,2,0,8,500,1\n0,1,2,0,8,500,1\n"
-                       "0,1,2,0,8,500,1\n"),
-              "drive.csv: line 5, column 'injected': no samples in the id = 0 state (by its 'injected' column)");
-    EXPECT_EQ(error_of("# only=metadata\n"), "drive.csv: no header line (expected t,ud,uq,id,iq,omega[,injected])");
+    EXPECT_EQ(
+        error_of("t,ud,uq,id,iq,omega,injected\n0,1,2,0,8,500,1\n0,1,2,0,8,500,1\n0,1,2,0,8,500,1\n"
+                 "0,1,2,0,8,500,1\n"),
+        "drive.csv: line 5, column 'injected': no samples in the id = 0 state (by its 'injected' column)");
+    EXPECT_EQ(error_of("# only=metadata\n"),
+              "drive.csv: no header line (expected t,ud,uq,id,iq,omega[,injected])");
     EXPECT_EQ(error_of("# Rs=1\n# Rs=2\n" + good.substr(good.find('\n') + 1)),
               "drive.csv: line 2, metadata key 'Rs' is given twice");
 }

@@ -1,9 +1,8 @@
 // Tests of the constant-time evaluation of eq. 11 (problems/pmsm/expanded_fitness.*): it must be
 // the same function as the sum over the samples. The reference here is that sum in long double
 // (64-bit mantissa), independent of both double-precision forms.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/steady_state_problem.hpp"
@@ -42,7 +41,8 @@ TEST(PmsmExpandedFitness, MatchesTheSumOverSamplesOnNoisyData) {
     for (int trial = 0; trial < 400; ++trial) {
         Eigen::VectorXd x(4);
         for (int j = 0; j < 4; ++j)
-            x[j] = trial % 2 == 0 ? rng.uniform(0.0, expanded.bounds().upper[j]) : opt[j] * (1.0 + 1e-3 * rng.normal());
+            x[j] = trial % 2 == 0 ? rng.uniform(0.0, expanded.bounds().upper[j])
+                                  : opt[j] * (1.0 + 1e-3 * rng.normal());
         const long double ref = reference_fitness(s, x);
         EXPECT_LT(relative_gap(expanded.evaluate(x), ref), 1e-12) << "trial " << trial;
         EXPECT_LT(relative_gap(direct.evaluate(x), ref), 1e-12) << "trial " << trial;

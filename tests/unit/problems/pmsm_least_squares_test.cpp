@@ -1,11 +1,10 @@
 // Tests of the steady-state fitness (eq. 11) and its least-squares reference
 // (problems/pmsm/steady_state_data.*, least_squares.*), against data built directly from eq. 2
 // and against the independent reference values in tests/data/pmsm/expected.csv.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 #include <string>
 
@@ -152,7 +151,8 @@ TEST(PmsmLeastSquares, ReproducesExpectedCsvOnTheCleanFile) {
 // The optimum is a minimum: f rises in every direction (a convexity check that can fail if the
 // solver or the fitness has a sign wrong).
 TEST(PmsmLeastSquares, OptimumIsAMinimumOfTheFitness) {
-    const SteadyStateData s = pair_samples(read_dataset_csv(data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv"));
+    const SteadyStateData s =
+        pair_samples(read_dataset_csv(data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv"));
     const LeastSquaresResult r = solve_least_squares(s);
     for (int j = 0; j < 4; ++j)
         for (const double step : {-1e-3, 1e-3}) {

@@ -1,7 +1,6 @@
 // Tests of the `pmsm` problem family as created through the registry (problems/pmsm/pmsm_family.cpp,
 // steady_state_problem.*): parameters, bounds parsing, determinism, and the Problem contract.
 #include <gtest/gtest.h>
-
 #include <string>
 
 #include "problems/pmsm/steady_state_problem.hpp"
@@ -52,7 +51,8 @@ TEST(PmsmProblem, IdenticalSpecGivesIdenticalDataBitForBit) {
 }
 
 TEST(PmsmProblem, ReadsAUsersDataset) {
-    const auto problem = builtin_problems().create("pmsm:data=" + data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
+    const auto problem =
+        builtin_problems().create("pmsm:data=" + data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
     // expected.csv: f_ls = 45.077285948014918 for this file.
     EXPECT_NEAR(problem->known_optimum()->f, 45.077285948014918, 1e-7);
     EXPECT_EQ(dynamic_cast<const pmsm::SteadyStateProblem&>(*problem).samples().pairs, 150);
@@ -66,9 +66,12 @@ TEST(PmsmProblem, BoundsAreOverridableAndCheckedWithClearErrors) {
     EXPECT_EQ(problem->bounds().upper[3], 0.2);
     EXPECT_EQ(problem->bounds().upper[1], 0.01);
     EXPECT_EQ(error_of("pmsm:rs=0.5:0.1"), "pmsm: parameter 'rs' = 0.5:0.1 needs lo < hi");
-    EXPECT_EQ(error_of("pmsm:ld=0.001"), "pmsm: parameter 'ld' = 0.001 is not of the form lo:hi (two finite numbers, e.g. 0:0.5)");
-    EXPECT_EQ(error_of("pmsm:lq=a:b"), "pmsm: parameter 'lq' = a:b is not of the form lo:hi (two finite numbers, e.g. 0:0.5)");
-    EXPECT_EQ(error_of("pmsm:psi=0:inf"), "pmsm: parameter 'psi' = 0:inf is not of the form lo:hi (two finite numbers, e.g. 0:0.5)");
+    EXPECT_EQ(error_of("pmsm:ld=0.001"),
+              "pmsm: parameter 'ld' = 0.001 is not of the form lo:hi (two finite numbers, e.g. 0:0.5)");
+    EXPECT_EQ(error_of("pmsm:lq=a:b"),
+              "pmsm: parameter 'lq' = a:b is not of the form lo:hi (two finite numbers, e.g. 0:0.5)");
+    EXPECT_EQ(error_of("pmsm:psi=0:inf"),
+              "pmsm: parameter 'psi' = 0:inf is not of the form lo:hi (two finite numbers, e.g. 0:0.5)");
     EXPECT_EQ(error_of("pmsm:rs=0.2:0.2"), "pmsm: parameter 'rs' = 0.2:0.2 needs lo < hi");
 }
 

@@ -1,8 +1,7 @@
 // Tests of the PMSM drive simulator (problems/pmsm/drive_simulator.*).
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <utility>
 
 #include "problems/pmsm/dataset_csv.hpp"
@@ -66,7 +65,8 @@ TEST(PmsmSimulator, ReproducesTheIndependentSimulatorsCleanDataset) {
     config.condition = {2200.0, 2.5};
     config.samples_per_state = 150;
     const Dataset mine = simulate_dataset(config);
-    const Dataset ref = read_dataset_csv(std::string(MHB_TEST_DATA_DIR) + "/pmsm/pmsm_public_2200rpm_2.5Nm_clean_ss.csv");
+    const Dataset ref =
+        read_dataset_csv(std::string(MHB_TEST_DATA_DIR) + "/pmsm/pmsm_public_2200rpm_2.5Nm_clean_ss.csv");
     ASSERT_EQ(mine.size(), ref.size());
     auto close = [](double a, double b) { return std::fabs(a - b) <= 1e-9 * std::fabs(b) + 1e-12; };
     for (std::size_t k = 0; k < ref.size(); ++k) {

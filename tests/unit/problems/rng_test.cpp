@@ -1,8 +1,7 @@
 // The random streams: fixed reference values (they must never change, or every published
 // study would change with them) and basic statistical properties.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 #include "problems/rng.hpp"
 

@@ -27,7 +27,8 @@ TEST(Spec, RejectsMalformedText) {
 }
 
 TEST(Spec, SplitsListsOnWhitespace) {
-    EXPECT_EQ(split_spec_list("  itlbo  tlbo\tpso:w=0.7 "), (std::vector<std::string>{"itlbo", "tlbo", "pso:w=0.7"}));
+    EXPECT_EQ(split_spec_list("  itlbo  tlbo\tpso:w=0.7 "),
+              (std::vector<std::string>{"itlbo", "tlbo", "pso:w=0.7"}));
 }
 
 TEST(Parameters, ValidatesTypesAndRangesAndReportsEveryError) {
@@ -63,15 +64,20 @@ TEST(Registry, UnknownNamesListWhatIsKnown) {
         (void)builtin_problems().create("no_such_problem");
         FAIL();
     } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("unknown problem 'no_such_problem'; known: "), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("unknown problem 'no_such_problem'; known: "),
+                  std::string::npos);
         EXPECT_NE(std::string(e.what()).find("sphere"), std::string::npos);
     }
 }
 
 TEST(Registry, ExpandsRangesOfRangedIntegers) {
     ProblemRegistry r("problem");
-    r.add({"toy", "", "", {ParameterInfo::integer("f", 1, 1, 24, "function").ranged(),
-                           ParameterInfo::integer("dim", 2, 1, 40, "dimension")}, nullptr});
+    r.add({"toy",
+           "",
+           "",
+           {ParameterInfo::integer("f", 1, 1, 24, "function").ranged(),
+            ParameterInfo::integer("dim", 2, 1, 40, "dimension")},
+           nullptr});
     const auto specs = r.expand(Spec::parse("toy:f=3-5,dim=10"));
     ASSERT_EQ(specs.size(), 3u);
     EXPECT_EQ(specs[0].canonical(), "toy:dim=10,f=3");

@@ -1,10 +1,10 @@
 // The nonparametric tests against published worked examples and independent implementations.
 // Where a value comes from SciPy, it is scipy 1.10.1 (Debian's /usr/bin/python3), whose
 // mannwhitneyu / wilcoxon / friedmanchisquare implement the same definitions independently.
-#include "results/hypothesis_tests.hpp"
-
 #include <gtest/gtest.h>
 #include <stdexcept>
+
+#include "results/hypothesis_tests.hpp"
 
 namespace mhb {
 namespace {

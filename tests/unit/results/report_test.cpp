@@ -3,11 +3,6 @@
 // golden copy in tests/data/golden/ (regenerate with MHB_UPDATE_GOLDEN=1 after a deliberate change
 // and review the diff), the LaTeX compiles where a TeX engine exists, figures are drawn or skipped
 // with one clear line, and bad options or damaged directories give clear errors.
-#include "results/critical_difference.hpp"
-#include "results/csv.hpp"
-#include "results/report.hpp"
-#include "results/store.hpp"
-
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -16,6 +11,11 @@
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
+
+#include "results/critical_difference.hpp"
+#include "results/csv.hpp"
+#include "results/report.hpp"
+#include "results/store.hpp"
 
 namespace mhb {
 namespace {

@@ -1,9 +1,9 @@
 // Descriptive statistics and COCO's ERT against values computed independently.
-#include "results/statistics.hpp"
-
 #include <cmath>
 #include <gtest/gtest.h>
 #include <stdexcept>
+
+#include "results/statistics.hpp"
 
 namespace mhb {
 namespace {

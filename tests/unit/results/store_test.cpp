@@ -1,9 +1,8 @@
 // The study store: records round-trip exactly, files are sorted by run id whatever the order
 // runs finish in, an interrupted study resumes, and damaged directories give clear errors.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 
 #include "results/csv.hpp"
 #include "results/store.hpp"

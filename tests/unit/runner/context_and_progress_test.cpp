@@ -1,11 +1,11 @@
 // context.ini carries the build's identity and the command line; the progress bar draws the
 // documented line, stays silent before its delay, and formats durations.
+#include <gtest/gtest.h>
+#include <sstream>
+
 #include "mhb_version.hpp"
 #include "runner/context.hpp"
 #include "runner/progress.hpp"
-
-#include <gtest/gtest.h>
-#include <sstream>
 
 namespace mhb {
 namespace {

@@ -1,16 +1,16 @@
 // The parallel runner: every run done once, results byte-identical for any thread count, and a
 // study cancelled after K runs then resumed gives files byte-identical to an uninterrupted one.
-#include "results/store.hpp"
-#include "runner/parallel_runner.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
-#include "tests/unit/runner/test_problem.hpp"
-
 #include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
+
+#include "results/store.hpp"
+#include "runner/parallel_runner.hpp"
+#include "runner/study.hpp"
+#include "runner/study_file.hpp"
+#include "tests/unit/runner/test_problem.hpp"
 
 namespace mhb {
 namespace {

@@ -1,15 +1,15 @@
 // Studies: expansion of problem ranges, the fixed run numbering, every configuration error
 // reported at once, the study.ini round trip, and the presets' contents.
+#include <gtest/gtest.h>
+#include <set>
+#include <sstream>
+
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/problem_registry.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
 #include "runner/study_presets.hpp"
 #include "tests/unit/runner/test_problem.hpp"
-
-#include <gtest/gtest.h>
-#include <set>
-#include <sstream>
 
 namespace mhb {
 namespace {
@@ -237,7 +237,8 @@ TEST(StudyFile, ReadsConfigSyntaxWithCommentsAndNamesTheKeyOfAnError) {
     EXPECT_EQ(message("runs = two\n"), "f.ini: 'runs = two' is not an integer");
     EXPECT_EQ(message("seed = -1\n"), "f.ini: 'seed = -1' is not an integer in [0, 2^64)");
     EXPECT_EQ(message("iterations = 3\niterations = 4\n"), "f.ini: 'iterations = 4' is given twice");
-    EXPECT_EQ(message("algorithm\n"), "f.ini: the options configuration file contains an invalid line 'algorithm'");
+    EXPECT_EQ(message("algorithm\n"),
+              "f.ini: the options configuration file contains an invalid line 'algorithm'");
 }
 
 TEST(StudyPresets, PaperPresetIsThePapersSetup) {

@@ -3,14 +3,14 @@
 // named parameters, a NaN) without a new Problem class each time.
 #pragma once
 
-#include "problems/problem_registry.hpp"
-
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "problems/problem_registry.hpp"
 
 namespace mhb::test {
 
