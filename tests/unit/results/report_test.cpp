@@ -325,7 +325,8 @@ TEST(ReportFigures, SkippedWithOneClearLineWhenNoMatplotlib) {
     EXPECT_TRUE(fs::exists(dir / "report" / "table2_fitness.md")); // the tables are still written
 }
 
-TEST(ReportFigures, DrawnWhenMatplotlibIsThere) {
+// Slow: matplotlib takes about 10 s to draw every figure.
+TEST(SlowReportFigures, DrawnWhenMatplotlibIsThere) {
     ReportOptions options;
     if (!find_matplotlib_python(options.python_candidates))
         GTEST_SKIP() << "no Python with matplotlib";
