@@ -12,6 +12,7 @@
 #include "problems/parameters.hpp"
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
+#include "runner/cli/parse_command_line.hpp"
 
 namespace mhb::cli {
 namespace {
@@ -82,12 +83,8 @@ int run_eval_command(const std::vector<std::string>& args) {
         "too "
         "(no bound repair)");
     po::variables_map vm;
-    po::store(po::command_line_parser(args).options(options).run(), vm);
-    if (vm.count("help")) {
-        std::cout << options << '\n';
+    if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
         return exit_ok;
-    }
-    po::notify(vm);
 
     const auto problem = builtin_problems().create(vm["problem"].as<std::string>());
     const std::string file = vm["points"].as<std::string>();

@@ -17,6 +17,7 @@
 #include "problems/pmsm/steady_state_data.hpp"
 #include "problems/pmsm/steady_state_problem.hpp"
 #include "runner/cli/command.hpp"
+#include "runner/cli/parse_command_line.hpp"
 
 namespace mhb::cli {
 
@@ -68,12 +69,8 @@ int run_identify_command(const std::vector<std::string>& args) {
          "without an 'injected' column, |id| above this (A) marks the injected state");
     // clang-format on
     po::variables_map vm;
-    po::store(po::command_line_parser(args).options(options).run(), vm);
-    if (vm.count("help") != 0) {
-        std::cout << options << '\n';
+    if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
         return exit_ok;
-    }
-    po::notify(vm);
     if (data_path.empty())
         throw std::invalid_argument("--data FILE is required (see mhbench identify --help)");
     if (!(threshold > 0))

@@ -11,6 +11,7 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
+#include "runner/cli/parse_command_line.hpp"
 #include "runner/study_presets.hpp"
 
 namespace mhb::cli {
@@ -87,16 +88,15 @@ int run_list_command(const std::vector<std::string>& args) {
     po::positional_options_description positional;
     positional.add("what", 1);
     po::variables_map vm;
-    po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
-    po::notify(vm);
-    if (vm.count("help") != 0) {
+    const auto print_help = [&] {
         std::cout << "Usage: mhbench list [algorithms|problems|studies]\n\n"
                      "Lists what a study can name: every registered optimiser and problem family with its\n"
                      "summary, reference and parameters (default, allowed values, meaning), and the study\n"
                      "presets of mhbench run --study.\n\n"
                   << options << "\nExamples:\n  mhbench list\n  mhbench list algorithms\n";
+    };
+    if (!parse_command_line(args, options, vm, print_help, &positional))
         return exit_ok;
-    }
     const std::string what = vm.count("what") != 0 ? vm["what"].as<std::string>() : "all";
     const bool all = what == "all";
     if (!all && what != "algorithms" && what != "problems" && what != "studies") {

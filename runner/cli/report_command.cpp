@@ -7,6 +7,7 @@
 #include "results/report.hpp"
 #include "results/store.hpp"
 #include "runner/cli/command.hpp"
+#include "runner/cli/parse_command_line.hpp"
 
 namespace mhb::cli {
 
@@ -45,12 +46,9 @@ int run_report_command(const std::vector<std::string>& args) {
     po::positional_options_description positional;
     positional.add("study", 1);
     po::variables_map vm;
-    po::store(po::command_line_parser(args).options(all).positional(positional).run(), vm);
-    if (vm.count("help")) {
-        std::cout << visible << '\n';
+    if (!parse_command_line(
+            args, all, vm, [&] { std::cout << visible << '\n'; }, &positional))
         return exit_ok;
-    }
-    po::notify(vm);
     if (study_dir.empty()) {
         std::cerr << "mhbench report: give the study directory (mhbench report DIR; see --help)\n";
         return exit_usage;

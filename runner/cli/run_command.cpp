@@ -18,6 +18,7 @@
 #include "results/report.hpp"
 #include "results/store.hpp"
 #include "runner/cli/command.hpp"
+#include "runner/cli/parse_command_line.hpp"
 #include "runner/context.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/progress.hpp"
@@ -214,12 +215,8 @@ void print_summary(const std::filesystem::path& dir, const RunnerOutcome& outcom
 int run_run_command(const std::vector<std::string>& args) {
     const po::options_description options = make_options();
     po::variables_map vm;
-    po::store(po::command_line_parser(args).options(options).run(), vm);
-    po::notify(vm);
-    if (vm.count("help") != 0) {
-        print_help(options);
+    if (!parse_command_line(args, options, vm, [&] { print_help(options); }))
         return exit_ok;
-    }
 
     std::vector<std::string> errors;
     int threads = 0;

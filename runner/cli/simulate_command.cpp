@@ -10,6 +10,7 @@
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/drive_simulator.hpp"
 #include "runner/cli/command.hpp"
+#include "runner/cli/parse_command_line.hpp"
 
 namespace mhb::cli {
 
@@ -56,12 +57,8 @@ int run_simulate_command(const std::vector<std::string>& args) {
          "at 2500 rpm; default: held in the rotor dq frame (ideal)");
     // clang-format on
     po::variables_map vm;
-    po::store(po::command_line_parser(args).options(options).run(), vm);
-    if (vm.count("help") != 0) {
-        std::cout << options << '\n';
+    if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
         return exit_ok;
-    }
-    po::notify(vm);
     if (out.empty())
         throw std::invalid_argument("--out FILE is required (see mhbench simulate --help)");
     if (seed < 0)

@@ -1,0 +1,33 @@
+// The command-line parsing every subcommand shares: Boost.Program_options with --help answered
+// before required options are checked, so `mhbench <command> --help` always works.
+#pragma once
+
+#include <boost/program_options.hpp>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mhb::cli {
+
+// Parses `args` into `vm`. Returns false after calling `print_help` when --help (or -h) was given;
+// otherwise notifies the options (which throws on a missing or malformed value) and returns true.
+inline bool
+parse_command_line(const std::vector<std::string>& args,
+                   const boost::program_options::options_description& options,
+                   boost::program_options::variables_map& vm, const std::function<void()>& print_help,
+                   const boost::program_options::positional_options_description* positional = nullptr) {
+    namespace po = boost::program_options;
+    po::command_line_parser parser(args);
+    parser.options(options);
+    if (positional != nullptr)
+        parser.positional(*positional);
+    po::store(parser.run(), vm);
+    if (vm.count("help") != 0) {
+        print_help();
+        return false;
+    }
+    po::notify(vm);
+    return true;
+}
+
+} // namespace mhb::cli
