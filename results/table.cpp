@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <regex>
 #include <stdexcept>
 
 #include "results/csv.hpp"
@@ -96,6 +97,25 @@ std::string latex_escape(const std::string& text) {
     return out;
 }
 
+// A cell for LaTeX: escaped, with every number in e-notation typeset as m x 10^e, so that tables
+// read as a paper's do ("2.9e-09" becomes $2.9\times10^{-9}$). Plain LaTeX, no package needed.
+std::string latex_cell(const std::string& text) {
+    static const std::regex scientific(R"((-?\d+(?:\.\d+)?)e([+-]?)0*(\d+))");
+    std::string escaped = latex_escape(text);
+    std::string out;
+    auto begin = std::sregex_iterator(escaped.begin(), escaped.end(), scientific);
+    std::size_t last = 0;
+    for (auto it = begin; it != std::sregex_iterator(); ++it) {
+        const auto& m = *it;
+        out.append(escaped, last, static_cast<std::size_t>(m.position()) - last);
+        const std::string sign = m[2].str() == "-" ? "-" : "";
+        out.append("$").append(m[1].str()).append("\\times10^{").append(sign).append(m[3].str()).append("}$");
+        last = static_cast<std::size_t>(m.position() + m.length());
+    }
+    out.append(escaped, last, std::string::npos);
+    return out;
+}
+
 std::string render_latex(const Table& table) {
     std::string spec = "l";
     for (std::size_t c = 1; c < table.header.size(); ++c)
@@ -111,10 +131,10 @@ std::string render_latex(const Table& table) {
     out += " \\\\\n\\midrule\n";
     for (const auto& row : table.rows) {
         for (std::size_t c = 0; c < row.size(); ++c) {
-            const std::string text = latex_escape(row[c].text);
+            const std::string text = latex_cell(row[c].text);
             out.append(c == 0 ? "" : " & ");
-            if (row[c].bold && !text.empty())
-                out.append("\\textbf{").append(text).append("}");
+            if (row[c].bold && !text.empty()) // \boldmath also bolds the numbers typeset in math mode
+                out.append("\\textbf{\\boldmath ").append(text).append("}");
             else
                 out += text;
         }
