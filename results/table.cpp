@@ -1,8 +1,8 @@
 #include "results/table.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <regex>
 #include <stdexcept>
 
 #include "results/csv.hpp"
@@ -100,19 +100,49 @@ std::string latex_escape(const std::string& text) {
 // A cell for LaTeX: escaped, with every number in e-notation typeset as m x 10^e, so that tables
 // read as a paper's do ("2.9e-09" becomes $2.9\times10^{-9}$). Plain LaTeX, no package needed.
 std::string latex_cell(const std::string& text) {
-    static const std::regex scientific(R"((-?\d+(?:\.\d+)?)e([+-]?)0*(\d+))");
-    std::string escaped = latex_escape(text);
+    const std::string escaped = latex_escape(text);
+    const auto digit = [&](std::size_t i) {
+        return i < escaped.size() && escaped[i] >= '0' && escaped[i] <= '9';
+    };
     std::string out;
-    auto begin = std::sregex_iterator(escaped.begin(), escaped.end(), scientific);
-    std::size_t last = 0;
-    for (auto it = begin; it != std::sregex_iterator(); ++it) {
-        const auto& m = *it;
-        out.append(escaped, last, static_cast<std::size_t>(m.position()) - last);
-        const std::string sign = m[2].str() == "-" ? "-" : "";
-        out.append("$").append(m[1].str()).append("\\times10^{").append(sign).append(m[3].str()).append("}$");
-        last = static_cast<std::size_t>(m.position() + m.length());
+    std::size_t i = 0;
+    while (i < escaped.size()) {
+        // A mantissa starts at a digit (or a '-' before one) that does not continue a word.
+        const bool word_before =
+            i > 0 && (std::isalnum(static_cast<unsigned char>(escaped[i - 1])) != 0 || escaped[i - 1] == '.');
+        const std::size_t start = i;
+        std::size_t j = escaped[i] == '-' ? i + 1 : i;
+        if (word_before || !digit(j)) {
+            out += escaped[i++];
+            continue;
+        }
+        while (digit(j))
+            ++j;
+        if (j < escaped.size() && escaped[j] == '.' && digit(j + 1))
+            for (++j; digit(j);)
+                ++j;
+        const std::size_t mantissa_end = j;
+        std::size_t k = j;
+        std::string sign;
+        if (k < escaped.size() && escaped[k] == 'e') {
+            ++k;
+            if (k < escaped.size() && (escaped[k] == '+' || escaped[k] == '-'))
+                sign = escaped[k++] == '-' ? "-" : "";
+        }
+        if (k == mantissa_end || !digit(k)) { // no exponent: copy the number as it is
+            out.append(escaped, start, mantissa_end - start);
+            i = mantissa_end;
+            continue;
+        }
+        while (k + 1 < escaped.size() && escaped[k] == '0' && digit(k + 1))
+            ++k; // 1e-09 -> 10^{-9}
+        std::size_t exponent_end = k;
+        while (digit(exponent_end))
+            ++exponent_end;
+        out.append("$").append(escaped, start, mantissa_end - start).append("\\times10^{").append(sign);
+        out.append(escaped, k, exponent_end - k).append("}$");
+        i = exponent_end;
     }
-    out.append(escaped, last, std::string::npos);
     return out;
 }
 
