@@ -13,6 +13,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include "support/files.hpp"
+
 namespace mhb::testing_cli {
 
 struct CliResult {
@@ -21,12 +23,7 @@ struct CliResult {
     std::string err;
 };
 
-inline std::string read_text(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
+using mhb::test_support::read_text;
 
 inline std::vector<std::string> lines_of(const std::string& text) {
     std::vector<std::string> out;

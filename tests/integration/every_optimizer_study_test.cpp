@@ -13,17 +13,13 @@
 #include "runner/parallel_runner.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
+#include "support/files.hpp"
 
 namespace mhb {
 namespace {
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
+using mhb::test_support::read_text;
 
 Study every_optimizer_study() {
     Study study;

@@ -16,6 +16,7 @@
 #include "results/csv.hpp"
 #include "results/report.hpp"
 #include "results/store.hpp"
+#include "support/files.hpp"
 
 namespace mhb {
 namespace {
@@ -107,12 +108,7 @@ fs::path make_study(const std::string& name) {
     return dir;
 }
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
+using mhb::test_support::read_text;
 
 ReportOptions no_figures() {
     ReportOptions options;

@@ -10,6 +10,7 @@
 #include "runner/parallel_runner.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
+#include "support/files.hpp"
 #include "tests/unit/runner/test_problem.hpp"
 
 namespace mhb {
@@ -22,12 +23,7 @@ fs::path fresh_dir(const std::string& name) {
     return dir;
 }
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
+using mhb::test_support::read_text;
 
 // 2 problems x 2 algorithms x 4 runs = 16 short runs.
 PreparedStudy make_study() {
