@@ -40,6 +40,9 @@ struct CsvTable {
 // when it is missing, empty, or a row has the wrong number of fields (e.g. a truncated file).
 CsvTable read_csv(const std::filesystem::path& path);
 
+// The whole content of a file; throws std::runtime_error naming it when it cannot be opened.
+std::string read_whole_file(const std::filesystem::path& path);
+
 // Writes `content` to `path` atomically (a temporary file in the same folder, then rename).
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 

@@ -1,11 +1,11 @@
-#include "results/store.hpp"
-
+// StudyWriter: the journal of finished runs, resuming, and the sorted result files (see store.hpp).
 #include <charconv>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "results/csv.hpp"
+#include "results/store.hpp"
 
 namespace mhb {
 namespace fs = std::filesystem;
@@ -20,15 +20,6 @@ std::string join_numbers(const std::vector<double>& values) {
         out += csv_number(values[i]);
     }
     return out;
-}
-
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw std::runtime_error(path.string() + ": cannot be opened (missing?)");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
 }
 
 const char* const result_files[] = {StudyFiles::runs,         StudyFiles::curves,  StudyFiles::checkpoints,
@@ -61,7 +52,7 @@ StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string conte
     if (!finished && unfinished) {
         std::string previous;
         if (fs::exists(dir_ / StudyFiles::study))
-            previous = read_text(dir_ / StudyFiles::study);
+            previous = read_whole_file(dir_ / StudyFiles::study);
         resume = previous == study_text;
         if (!resume && !overwrite)
             throw std::runtime_error(dir_.string() +
@@ -252,145 +243,6 @@ void StudyWriter::finish() {
     write_file_atomically(dir_ / StudyFiles::runs, runs);
     std::error_code ec;
     fs::remove(dir_ / StudyFiles::journal, ec);
-}
-
-namespace {
-
-std::vector<double> split_numbers(const CsvTable& t, std::size_t row, std::size_t column) {
-    std::vector<double> values;
-    const std::string& text = t.rows[row][column];
-    std::size_t i = 0;
-    while (i < text.size()) {
-        const auto j = std::min(text.find(' ', i), text.size());
-        double v = 0;
-        const auto [ptr, ec] = std::from_chars(text.data() + i, text.data() + j, v);
-        if (ec != std::errc() || ptr != text.data() + j)
-            throw std::runtime_error(t.path.string() + ", line " + std::to_string(t.line_numbers[row]) +
-                                     ", column '" + t.header[column] + "': not a list of numbers");
-        values.push_back(v);
-        i = j + 1;
-    }
-    return values;
-}
-
-std::int64_t find_run(const std::map<std::int64_t, std::size_t>& index, const CsvTable& t, std::size_t row) {
-    const std::int64_t id = t.integer(row, t.column("run_id"));
-    if (index.find(id) == index.end())
-        throw std::runtime_error(t.path.string() + ", line " + std::to_string(t.line_numbers[row]) +
-                                 ": run_id " + std::to_string(id) + " is not in runs.csv");
-    return id;
-}
-
-} // namespace
-
-StudyData load_study(const fs::path& dir) {
-    if (!fs::is_directory(dir))
-        throw std::runtime_error(dir.string() + ": is not a directory");
-    if (!fs::exists(dir / StudyFiles::runs) && fs::exists(dir / StudyFiles::journal))
-        throw std::runtime_error(dir.string() +
-                                 ": holds an unfinished study (journal.txt but no runs.csv); run the same "
-                                 "command again to resume it");
-    StudyData data;
-    data.directory = dir;
-    data.study_text = read_text(dir / StudyFiles::study);
-    data.context_text = read_text(dir / StudyFiles::context);
-
-    const CsvTable runs = read_csv(dir / StudyFiles::runs);
-    const std::size_t first_parameter = runs.column("best_x") + 1;
-    const std::size_t message_column = runs.column("message");
-    constexpr std::size_t per_parameter = 4; // P, P_true, P_opt, P_err_pct
-    if (message_column < first_parameter || (message_column - first_parameter) % per_parameter != 0)
-        throw std::runtime_error(runs.path.string() + ": parameter columns are malformed");
-    for (std::size_t c = first_parameter; c < message_column; c += per_parameter)
-        data.parameter_columns.push_back(runs.header[c]);
-
-    std::map<std::int64_t, std::size_t> index;
-    const auto col = [&](const char* name) { return runs.column(name); };
-    for (std::size_t row = 0; row < runs.rows.size(); ++row) {
-        RunRecord r;
-        r.run_id = runs.integer(row, col("run_id"));
-        r.algorithm = runs.rows[row][col("algorithm")];
-        r.problem = runs.rows[row][col("problem")];
-        r.run_index = runs.integer(row, col("run"));
-        const std::string& seed = runs.rows[row][col("seed")];
-        if (std::from_chars(seed.data(), seed.data() + seed.size(), r.seed).ec != std::errc())
-            throw std::runtime_error(runs.path.string() + ", line " + std::to_string(runs.line_numbers[row]) +
-                                     ", column 'seed': not an unsigned integer");
-        const std::string& status = runs.rows[row][col("status")];
-        if (status != "ok" && status != "failed")
-            throw std::runtime_error(runs.path.string() + ", line " + std::to_string(runs.line_numbers[row]) +
-                                     ", column 'status': '" + status + "' is not ok or failed");
-        r.ok = status == "ok";
-        r.evaluations = runs.integer(row, col("evaluations"));
-        r.iterations = runs.integer(row, col("iterations"));
-        if (r.ok)
-            r.best_f = runs.number(row, col("best_f"));
-        r.f_opt = runs.optional_number(row, col("f_opt"));
-        if (const auto e = runs.optional_number(row, col("evals_to_target")))
-            r.evaluations_to_target = static_cast<std::int64_t>(*e);
-        r.best_x = split_numbers(runs, row, col("best_x"));
-        bool all_truths = true;
-        bool all_optima = true;
-        for (std::size_t c = first_parameter; c < message_column; c += per_parameter) {
-            if (runs.rows[row][c].empty())
-                continue;
-            r.parameter_names.push_back(runs.header[c]);
-            const auto truth = runs.optional_number(row, c + 1);
-            all_truths = all_truths && truth.has_value();
-            r.true_parameters.push_back(truth.value_or(0.0));
-            const auto optimum = runs.optional_number(row, c + 2);
-            all_optima = all_optima && optimum.has_value();
-            r.x_opt.push_back(optimum.value_or(0.0));
-        }
-        if (!all_truths)
-            r.true_parameters.clear();
-        if (!all_optima)
-            r.x_opt.clear();
-        r.message = runs.rows[row][message_column];
-        if (index.count(r.run_id) != 0)
-            throw std::runtime_error(runs.path.string() + ", line " + std::to_string(runs.line_numbers[row]) +
-                                     ": run_id " + std::to_string(r.run_id) + " appears twice");
-        index[r.run_id] = data.runs.size();
-        data.runs.push_back(std::move(r));
-    }
-
-    const CsvTable curves = read_csv(dir / StudyFiles::curves);
-    for (std::size_t row = 0; row < curves.rows.size(); ++row) {
-        const auto id = find_run(index, curves, row);
-        data.runs[index[id]].curve.push_back({curves.integer(row, curves.column("iteration")),
-                                              curves.integer(row, curves.column("evaluations")),
-                                              curves.number(row, curves.column("best_f")),
-                                              {}});
-    }
-    const CsvTable checkpoints = read_csv(dir / StudyFiles::checkpoints);
-    for (std::size_t row = 0; row < checkpoints.rows.size(); ++row) {
-        const auto id = find_run(index, checkpoints, row);
-        data.runs[index[id]].checkpoints.push_back(
-            {checkpoints.integer(row, checkpoints.column("evaluations")),
-             checkpoints.number(row, checkpoints.column("best_f"))});
-    }
-    const CsvTable trajectories = read_csv(dir / StudyFiles::trajectories);
-    for (std::size_t row = 0; row < trajectories.rows.size(); ++row) {
-        const auto id = find_run(index, trajectories, row);
-        RunRecord& r = data.runs[index[id]];
-        const std::int64_t iteration = trajectories.integer(row, trajectories.column("iteration"));
-        CurvePoint* point = nullptr;
-        for (auto& p : r.curve)
-            if (p.iteration == iteration)
-                point = &p;
-        if (point == nullptr)
-            throw std::runtime_error(trajectories.path.string() + ", line " +
-                                     std::to_string(trajectories.line_numbers[row]) + ": iteration " +
-                                     std::to_string(iteration) + " of run " + std::to_string(id) +
-                                     " is not in curves.csv");
-        for (const auto& name : r.parameter_names)
-            point->best_x.push_back(trajectories.number(row, trajectories.column(name)));
-    }
-    const CsvTable timings = read_csv(dir / StudyFiles::timings);
-    for (std::size_t row = 0; row < timings.rows.size(); ++row)
-        data.wall_seconds[find_run(index, timings, row)] =
-            timings.number(row, timings.column("wall_seconds"));
-    return data;
 }
 
 } // namespace mhb
