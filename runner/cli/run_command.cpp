@@ -1,6 +1,7 @@
 // `mhbench run`: describe a study (options, a preset, or a study file), validate all of it,
 // run it in parallel into a study directory, and print a short summary. Ctrl-C stops starting
 // new runs, keeps the finished ones, and the same command resumes.
+#include <algorithm>
 #include <atomic>
 #include <boost/program_options.hpp>
 #include <chrono>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "problems/parameters.hpp"
 #include "problems/spec.hpp"
 #include "results/report.hpp"
 #include "results/store.hpp"
@@ -88,13 +90,14 @@ po::options_description make_options() {
          "problems, as name:key=value,...; integer parameters may be ranges, e.g. f=1-24 "
          "(see `mhbench list problems`)")
         ("problem", po::value<std::vector<std::string>>()->multitoken()->composing(), "same as --problems")
-        ("runs", po::value<long long>(), "runs of each algorithm on each problem (default 20)")
+        ("runs", po::value<std::string>(), "runs of each algorithm on each problem (default 20)")
         ("seed", po::value<std::string>(), "study seed, 0 to 2^64-1; every run's seed is derived from it (default 1)")
-        ("iterations", po::value<long long>(),
+        ("iterations", po::value<std::string>(),
          "budget: iterations per run after the initialisation (iteration 0). A study needs "
          "--iterations or --evaluations; a preset brings its own")
-        ("evaluations", po::value<long long>(),
-         "budget: function evaluations per run; with --iterations, whichever is spent first ends the run. "
+        ("evaluations", po::value<std::string>(),
+         "budget: function evaluations per run (1e5 is accepted); with --iterations, whichever is spent "
+         "first ends the run. "
          "Either replaces both of a preset's budget values")
         ("target", po::value<double>(), "also stop a run once best f - f* <= this (problems with a known optimum)")
         ("threads", po::value<int>(), "worker threads (default: all hardware threads); results do not depend on it")
@@ -168,8 +171,20 @@ void apply_options(const po::variables_map& vm, Study& study, std::vector<std::s
         study.algorithms = std::move(a);
     if (auto p = spec_list(vm, "problems", "problem"); !p.empty())
         study.problems = std::move(p);
-    if (vm.count("runs") != 0)
-        study.runs = vm["runs"].as<long long>();
+    // Integers may be written 1e5, as in specs; range checks come with the study's validation.
+    const auto integer_option = [&](const char* key) -> std::optional<std::int64_t> {
+        if (vm.count(key) == 0)
+            return std::nullopt;
+        const auto& text = vm[key].as<std::string>();
+        long long value = 0;
+        if (!parse_integer(text, value)) {
+            errors.push_back(std::string(key) + " = " + text + " is not an integer");
+            return std::nullopt;
+        }
+        return value;
+    };
+    if (const auto runs = integer_option("runs"))
+        study.runs = *runs;
     if (vm.count("seed") != 0) {
         const auto& text = vm["seed"].as<std::string>();
         std::istringstream in(text);
@@ -181,10 +196,8 @@ void apply_options(const po::variables_map& vm, Study& study, std::vector<std::s
     if (vm.count("iterations") != 0 || vm.count("evaluations") != 0) {
         study.budget.max_iterations.reset();
         study.budget.max_evaluations.reset();
-        if (vm.count("iterations") != 0)
-            study.budget.max_iterations = vm["iterations"].as<long long>();
-        if (vm.count("evaluations") != 0)
-            study.budget.max_evaluations = vm["evaluations"].as<long long>();
+        study.budget.max_iterations = integer_option("iterations");
+        study.budget.max_evaluations = integer_option("evaluations");
     }
     if (vm.count("target") != 0)
         study.budget.target_error = vm["target"].as<double>();
@@ -236,8 +249,17 @@ int run_run_command(const std::vector<std::string>& args) {
             prepared = prepare_study(study);
         } catch (const std::invalid_argument& e) {
             std::istringstream in(e.what());
-            for (std::string line; std::getline(in, line);)
-                errors.push_back(line);
+            for (std::string line; std::getline(in, line);) {
+                // A malformed --iterations/--evaluations was reported already; "no budget" would repeat it.
+                const bool budget_echo =
+                    line.rfind("budget: give", 0) == 0 &&
+                    std::any_of(errors.begin(), errors.end(), [](const std::string& earlier) {
+                        return earlier.rfind("iterations = ", 0) == 0 ||
+                               earlier.rfind("evaluations = ", 0) == 0;
+                    });
+                if (!budget_echo)
+                    errors.push_back(line);
+            }
         }
     }
     if (!errors.empty()) {

@@ -140,6 +140,8 @@ TEST(CliRun, BadInputGivesOneLinePerErrorNonZeroExitAndNoRunsCsv) {
           "mhbench run: study: runs = 0 is outside [1, 1000000]"}},
         {"--algorithms random-search --problems sphere",
          {"mhbench run: budget: give a number of iterations or of evaluations (or both)"}},
+        {"--algorithms random-search --problems sphere --evaluations lots --runs 2.5",
+         {"mhbench run: runs = 2.5 is not an integer", "mhbench run: evaluations = lots is not an integer"}},
         {"--study nope", {"mhbench run: unknown study 'nope'; known: " + known_study_names()}},
         {"--algorithms random-search --problems sphere --iterations 5 --out " +
              (work / "a_file" / "sub").string(),
