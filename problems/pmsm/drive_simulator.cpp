@@ -267,16 +267,25 @@ private:
 
 } // namespace
 
-Dataset simulate_trace(const SimulatorConfig& config, int periods) {
-    config.validate();
-    if (periods < 0)
-        throw std::invalid_argument("pmsm simulator: periods must be >= 0");
-    Drive drive(config);
+namespace {
+
+// The drive's log over its first `periods` control periods.
+Dataset run_periods(Drive& drive, int periods) {
     Dataset log;
     log.reserve(static_cast<std::size_t>(periods));
     for (int k = 0; k < periods; ++k)
         drive.step(k, log);
     return log;
+}
+
+} // namespace
+
+Dataset simulate_trace(const SimulatorConfig& config, int periods) {
+    config.validate();
+    if (periods < 0)
+        throw std::invalid_argument("pmsm simulator: periods must be >= 0");
+    Drive drive(config);
+    return run_periods(drive, periods);
 }
 
 Dataset simulate_dataset(const SimulatorConfig& config) {
@@ -288,10 +297,7 @@ Dataset simulate_dataset(const SimulatorConfig& config) {
     const int end_off = settle + 3 * plateau;
     const int end_on = settle + 4 * plateau;
     Drive drive(config);
-    Dataset all;
-    all.reserve(static_cast<std::size_t>(end_on));
-    for (int k = 0; k < end_on; ++k)
-        drive.step(k, all);
+    const Dataset all = run_periods(drive, end_on);
 
     Dataset out;
     out.reserve(static_cast<std::size_t>(2 * n));
