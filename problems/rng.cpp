@@ -31,6 +31,16 @@ std::uint64_t derive_seed(std::uint64_t study_seed, std::string_view algorithm_s
     return h;
 }
 
+std::uint64_t derive_seed(std::uint64_t study_seed, std::string_view problem_spec,
+                          std::uint64_t run_index) noexcept {
+    // A tag of its own in place of the algorithm, so no algorithm's per-algorithm stream can
+    // coincide with the common one.
+    std::uint64_t h = mix64(study_seed ^ 0x5bd1e9955bd1e995ULL);
+    h = mix64(h ^ (stable_hash(problem_spec) + 0x632be59bd9b4e019ULL));
+    h = mix64(h ^ run_index);
+    return h;
+}
+
 Rng::Rng(std::uint64_t seed) noexcept {
     std::uint64_t x = seed;
     for (auto& s : s_) {

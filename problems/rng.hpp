@@ -2,9 +2,11 @@
 // through SplitMix64, with our own uniform, integer and normal draws (std:: distributions differ
 // between libstdc++ and libc++, and would break bit-for-bit reproducibility).
 //
-// Every run gets its own stream from derive_seed(study seed, algorithm, problem, run index), a
-// fixed hash of names and numbers — never thread ids or time — so results do not depend on
-// scheduling or thread count.
+// Every run gets its own stream from a fixed hash of names and numbers — never thread ids or
+// time — so results do not depend on scheduling or thread count. By default the hash takes
+// (study seed, problem, run index) only: every algorithm of a study starts run r on problem p
+// from the same stream (common random numbers, so runs pair across algorithms). The older
+// derivation that also hashes the algorithm spec is kept for `seeds = per-algorithm` studies.
 #pragma once
 
 #include <cstdint>
@@ -18,7 +20,11 @@ std::uint64_t stable_hash(std::string_view text) noexcept;
 // SplitMix64's finaliser: a bijective mix of 64 bits.
 std::uint64_t mix64(std::uint64_t x) noexcept;
 
-// The seed of one run's stream.
+// The seed of one run's stream, the same for every algorithm (common random numbers).
+std::uint64_t derive_seed(std::uint64_t study_seed, std::string_view problem_spec,
+                          std::uint64_t run_index) noexcept;
+
+// The seed of one run's stream, different for each algorithm (`seeds = per-algorithm`).
 std::uint64_t derive_seed(std::uint64_t study_seed, std::string_view algorithm_spec,
                           std::string_view problem_spec, std::uint64_t run_index) noexcept;
 
