@@ -6,6 +6,8 @@
 //   curves.csv       best-so-far per iteration (long format)        } count: finished only by
 //   checkpoints.csv  best-so-far on the shared evaluation grid      } StudyWriter::finish()
 //   trajectories.csv best x per iteration, for named parameters     }
+//   algorithms.csv   one row per algorithm of the study: its canonical spec, its display label
+//                    and its full spec (every parameter, defaults included)
 //   timings.csv      wall seconds per run (the one thing that varies between two runs)
 //   journal.txt      while a study runs: every finished run, appended and flushed at once, so
 //                    an interrupted study resumes without losing or repeating a run
@@ -33,6 +35,7 @@ struct StudyFiles {
     static constexpr const char* checkpoints = "checkpoints.csv";
     static constexpr const char* trajectories = "trajectories.csv";
     static constexpr const char* timings = "timings.csv";
+    static constexpr const char* algorithms = "algorithms.csv";
     static constexpr const char* journal = "journal.txt";
 };
 
@@ -79,11 +82,21 @@ private:
 // The header of runs.csv for the given parameter columns.
 std::string runs_csv_header(const std::vector<std::string>& parameter_columns);
 
+// An algorithm of the study as the report shows it (algorithms.csv).
+struct AlgorithmInfo {
+    std::string spec;      // canonical: defaults dropped, values normalised, as in RunRecord::algorithm
+    std::string label;     // display name: `label=` of the spec, a grid label such as itlbo[T-S+O-], or spec
+    std::string full_spec; // every declared parameter with its value, e.g. tlbo:np=50,r=coordinate
+};
+
 struct StudyData {
     std::filesystem::path directory;
     std::string study_text;
     std::string context_text;
     std::vector<std::string> parameter_columns;
+    // In study order; empty for studies written before algorithms.csv existed (then label and
+    // full spec are the spec itself).
+    std::vector<AlgorithmInfo> algorithms;
     std::vector<RunRecord> runs; // sorted by run_id, with curve and checkpoints filled in
     std::map<std::int64_t, double> wall_seconds;
 };
