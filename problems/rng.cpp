@@ -52,6 +52,26 @@ Rng::Rng(std::uint64_t seed) noexcept {
     }
 }
 
+void Rng::jump() noexcept {
+    // The jump polynomial of xoshiro256** for 2^128 steps (Blackman, Vigna, xoshiro256starstar.c):
+    // the state after the jump is the sum over GF(2) of the states s, T s, T^2 s, ... selected by
+    // the polynomial's bits. tests/unit/problems/rng_jump_reference.py checks it equals T^(2^128).
+    static constexpr std::uint64_t polynomial[4] = {0x180ec6d33cfd0abaULL, 0xd5a61266f0c9392cULL,
+                                                    0xa9582618e03fc9aaULL, 0x39abdc4529b1661cULL};
+    std::uint64_t jumped[4] = {0, 0, 0, 0};
+    for (const std::uint64_t word : polynomial)
+        for (int bit = 0; bit < 64; ++bit) {
+            if ((word >> bit) & 1U)
+                for (int k = 0; k < 4; ++k)
+                    jumped[k] ^= s_[k];
+            static_cast<void>(next());
+        }
+    for (int k = 0; k < 4; ++k)
+        s_[k] = jumped[k];
+    has_spare_ = false;
+    spare_normal_ = 0.0;
+}
+
 namespace {
 // __extension__ keeps -Wpedantic quiet about the GCC/Clang 128-bit type Lemire's method needs.
 __extension__ using Uint128 = unsigned __int128;

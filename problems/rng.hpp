@@ -7,6 +7,8 @@
 // (study seed, problem, run index) only: every algorithm of a study starts run r on problem p
 // from the same stream (common random numbers, so runs pair across algorithms). The older
 // derivation that also hashes the algorithm spec is kept for `seeds = per-algorithm` studies.
+// Within a run, an optimiser that wants a second stream takes a jumped copy of its own
+// (Rng::jumped()), so the extra stream is a function of the run's seed and nothing else.
 #pragma once
 
 #include <cstdint>
@@ -62,6 +64,17 @@ public:
     double normal() noexcept;
     // True with probability p.
     bool bernoulli(double p) noexcept { return uniform() < p; }
+
+    // Advances the stream by 2^128 draws of next() (the jump() of Blackman and Vigna's reference
+    // xoshiro256starstar.c): streams a jump apart never overlap in practice, so one seed yields
+    // independent sub-streams. Drops a cached spare normal, which belongs to the old position.
+    void jump() noexcept;
+    // A copy of this stream, jumped; this stream is left as it is.
+    [[nodiscard]] Rng jumped() const noexcept {
+        Rng copy = *this;
+        copy.jump();
+        return copy;
+    }
 
 private:
     static constexpr std::uint64_t rotl(std::uint64_t x, int k) noexcept {
