@@ -145,6 +145,27 @@ std::string format_real(double value) {
     return std::string(buf, result.ptr);
 }
 
+std::string normal_value(const ParameterInfo& info, std::string_view value) {
+    switch (info.kind) {
+    case ParameterKind::real: {
+        double v = 0;
+        return parse_real(value, v) ? format_real(v == 0.0 ? 0.0 : v) : std::string(value); // -0 is 0
+    }
+    case ParameterKind::integer: {
+        long long v = 0;
+        return parse_integer(value, v) ? std::to_string(v) : std::string(value);
+    }
+    case ParameterKind::boolean: {
+        bool v = false;
+        return parse_boolean(value, v) ? (v ? "on" : "off") : std::string(value);
+    }
+    case ParameterKind::choice:
+    case ParameterKind::text:
+        break;
+    }
+    return std::string(value);
+}
+
 void ParameterValues::set(std::string name, std::string value, bool given) {
     if (given)
         given_.insert(name);

@@ -82,6 +82,11 @@ private:
 ParameterValues validate_parameters(std::string_view component, const std::vector<ParameterInfo>& declared,
                                     const Spec& spec);
 
+// `value` (valid for `info`) in normal form: a real as its shortest round-trip text, an integer
+// in decimal, a boolean as on/off, anything else as written. Two texts that mean the same value
+// have the same normal form.
+std::string normal_value(const ParameterInfo& info, std::string_view value);
+
 // Strict number parsing for user input: the whole text must be a finite number.
 bool parse_real(std::string_view text, double& out);
 bool parse_integer(std::string_view text, long long& out);

@@ -3,6 +3,7 @@
 // (`register_builtin_algorithms(registry)`), never static self-registration a linker may drop.
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -57,6 +58,50 @@ public:
 
     [[nodiscard]] ParameterValues validate(const Spec& spec) const {
         return validate_parameters(spec.name, find(spec.name).parameters, spec);
+    }
+
+    // The spec validated, each written value in normal form (see normal_value: `w=0.50` is
+    // `w=0.5`, `obl=false` is `obl=off`, `np=5e1` is `np=50`), keys sorted. Throws like validate().
+    [[nodiscard]] Spec normalised(const Spec& spec) const {
+        const Entry& entry = find(spec.name);
+        (void)validate_parameters(spec.name, entry.parameters, spec);
+        Spec out{spec.name, {}};
+        for (const auto& [key, value] : spec.parameters)
+            out.parameters.emplace_back(key, normal_value(declaration(entry, key), value));
+        std::sort(out.parameters.begin(), out.parameters.end());
+        return out;
+    }
+
+    // The identity of a component: normalised() without the parameters that equal their default,
+    // so that `tlbo` and `tlbo:np=50` are one optimiser, whatever the text.
+    [[nodiscard]] Spec minimal(const Spec& spec) const {
+        const Entry& entry = find(spec.name);
+        Spec out = normalised(spec);
+        std::erase_if(out.parameters, [&](const auto& kv) {
+            const ParameterInfo& p = declaration(entry, kv.first);
+            return !p.default_value.empty() && normal_value(p, p.default_value) == kv.second;
+        });
+        return out;
+    }
+
+    // Every declared parameter with its value, given or default (normal form, keys sorted);
+    // parameters without a default that were not given are left out.
+    [[nodiscard]] Spec full(const Spec& spec) const {
+        const Entry& entry = find(spec.name);
+        Spec out = normalised(spec);
+        for (const auto& p : entry.parameters)
+            if (spec.find(p.name) == nullptr && !p.default_value.empty())
+                out.parameters.emplace_back(p.name, normal_value(p, p.default_value));
+        std::sort(out.parameters.begin(), out.parameters.end());
+        return out;
+    }
+
+    // The declaration of parameter `key` of `entry` (which validation has already checked).
+    [[nodiscard]] static const ParameterInfo& declaration(const Entry& entry, std::string_view key) {
+        for (const auto& p : entry.parameters)
+            if (p.name == key)
+                return p;
+        throw std::logic_error(entry.name + ": parameter '" + std::string(key) + "' is not declared");
     }
 
     [[nodiscard]] std::unique_ptr<Product> create(const Spec& spec) const {

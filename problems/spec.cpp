@@ -77,20 +77,4 @@ const std::string* Spec::find(std::string_view key) const {
     return nullptr;
 }
 
-std::vector<std::string> split_spec_list(std::string_view text) {
-    std::vector<std::string> out;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\n'))
-            ++i;
-        std::size_t j = i;
-        while (j < text.size() && text[j] != ' ' && text[j] != '\t' && text[j] != '\n')
-            ++j;
-        if (j > i)
-            out.emplace_back(text.substr(i, j - i));
-        i = j;
-    }
-    return out;
-}
-
 } // namespace mhb

@@ -26,7 +26,4 @@ struct Spec {
     [[nodiscard]] const std::string* find(std::string_view key) const;
 };
 
-// Splits a list of specs given as one string, separated by spaces (as `--algorithms "a b"`).
-std::vector<std::string> split_spec_list(std::string_view text);
-
 } // namespace mhb

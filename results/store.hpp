@@ -39,6 +39,13 @@ struct StudyFiles {
     static constexpr const char* journal = "journal.txt";
 };
 
+// An algorithm of the study as the report shows it (algorithms.csv).
+struct AlgorithmInfo {
+    std::string spec;      // canonical: defaults dropped, values normalised, as in RunRecord::algorithm
+    std::string label;     // display name: `label=` of the spec, a grid label such as itlbo[T-S+O-], or spec
+    std::string full_spec; // every declared parameter with its value, e.g. tlbo:np=50,r=coordinate
+};
+
 class StudyWriter {
 public:
     // Prepares `dir` for a study described by `study_text` (the content of study.ini).
@@ -49,8 +56,10 @@ public:
     // `parameter_columns` is the union of the named parameters of the study's problems, in order:
     // runs.csv gets the columns P, P_true, P_opt and P_err_pct for each (P_opt: the coordinate of
     // the known optimum, e.g. the least-squares estimate; P_err_pct: 100 (P - P_true) / P_true).
+    // `algorithms` (in study order) becomes algorithms.csv; none: no such file.
     StudyWriter(std::filesystem::path dir, std::string study_text, std::string context_text,
-                std::vector<std::string> parameter_columns, bool overwrite);
+                std::vector<std::string> parameter_columns, bool overwrite,
+                const std::vector<AlgorithmInfo>& algorithms = {});
 
     [[nodiscard]] const std::set<std::int64_t>& completed() const { return completed_; }
     [[nodiscard]] const std::filesystem::path& directory() const { return dir_; }
@@ -81,13 +90,6 @@ private:
 
 // The header of runs.csv for the given parameter columns.
 std::string runs_csv_header(const std::vector<std::string>& parameter_columns);
-
-// An algorithm of the study as the report shows it (algorithms.csv).
-struct AlgorithmInfo {
-    std::string spec;      // canonical: defaults dropped, values normalised, as in RunRecord::algorithm
-    std::string label;     // display name: `label=` of the spec, a grid label such as itlbo[T-S+O-], or spec
-    std::string full_spec; // every declared parameter with its value, e.g. tlbo:np=50,r=coordinate
-};
 
 struct StudyData {
     std::filesystem::path directory;

@@ -50,6 +50,12 @@ StudyData load_study(const fs::path& dir) {
     data.directory = dir;
     data.study_text = read_whole_file(dir / StudyFiles::study);
     data.context_text = read_whole_file(dir / StudyFiles::context);
+    if (fs::exists(dir / StudyFiles::algorithms)) {
+        const CsvTable algorithms = read_csv(dir / StudyFiles::algorithms);
+        for (const auto& row : algorithms.rows)
+            data.algorithms.push_back({row[algorithms.column("algorithm")], row[algorithms.column("label")],
+                                       row[algorithms.column("parameters")]});
+    }
 
     const CsvTable runs = read_csv(dir / StudyFiles::runs);
     const std::size_t first_parameter = runs.column("best_x") + 1;
@@ -60,6 +66,8 @@ StudyData load_study(const fs::path& dir) {
     for (std::size_t c = first_parameter; c < message_column; c += per_parameter)
         data.parameter_columns.push_back(runs.header[c]);
 
+    // Studies written before budgets were recorded have no budget column.
+    const bool has_budget = runs.has_column("budget");
     std::map<std::int64_t, std::size_t> index;
     const auto col = [&](const char* name) { return runs.column(name); };
     for (std::size_t row = 0; row < runs.rows.size(); ++row) {
@@ -67,6 +75,8 @@ StudyData load_study(const fs::path& dir) {
         r.run_id = runs.integer(row, col("run_id"));
         r.algorithm = runs.rows[row][col("algorithm")];
         r.problem = runs.rows[row][col("problem")];
+        if (has_budget)
+            r.budget = runs.rows[row][col("budget")];
         r.run_index = runs.integer(row, col("run"));
         const std::string& seed = runs.rows[row][col("seed")];
         if (std::from_chars(seed.data(), seed.data() + seed.size(), r.seed).ec != std::errc())

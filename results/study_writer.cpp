@@ -28,15 +28,17 @@ const char* const result_files[] = {StudyFiles::runs,         StudyFiles::curves
 } // namespace
 
 std::string runs_csv_header(const std::vector<std::string>& parameter_columns) {
-    std::string header = "run_id,algorithm,problem,run,seed,status,evaluations,iterations,best_f,f_opt,error,"
-                         "evals_to_target,best_x";
+    std::string header =
+        "run_id,algorithm,problem,budget,run,seed,status,evaluations,iterations,best_f,f_opt,error,"
+        "evals_to_target,best_x";
     for (const auto& p : parameter_columns)
         header += "," + p + "," + p + "_true," + p + "_opt," + p + "_err_pct";
     return header + ",message\n";
 }
 
 StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string context_text,
-                         std::vector<std::string> parameter_columns, bool overwrite)
+                         std::vector<std::string> parameter_columns, bool overwrite,
+                         const std::vector<AlgorithmInfo>& algorithms)
     : dir_(std::move(dir)), parameter_columns_(std::move(parameter_columns)) {
     std::error_code ec;
     fs::create_directories(dir_, ec);
@@ -64,6 +66,14 @@ StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string conte
             fs::remove(dir_ / name, ec);
     write_file_atomically(dir_ / StudyFiles::study, study_text);
     write_file_atomically(dir_ / StudyFiles::context, context_text);
+    if (algorithms.empty()) {
+        fs::remove(dir_ / StudyFiles::algorithms, ec);
+    } else {
+        std::string table = "algorithm,label,parameters\n";
+        for (const auto& a : algorithms)
+            table += csv_field(a.spec) + ',' + csv_field(a.label) + ',' + csv_field(a.full_spec) + '\n';
+        write_file_atomically(dir_ / StudyFiles::algorithms, table);
+    }
     if (resume)
         load_journal();
 }
@@ -71,13 +81,13 @@ StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string conte
 StudyWriter::Block StudyWriter::render(const RunRecord& r, double wall_seconds) const {
     Block block;
     const std::string id = std::to_string(r.run_id);
-    std::string line = id + ',' + csv_field(r.algorithm) + ',' + csv_field(r.problem) + ',' +
-                       std::to_string(r.run_index) + ',' + std::to_string(r.seed) + ',' +
-                       (r.ok ? "ok" : "failed") + ',' + std::to_string(r.evaluations) + ',' +
-                       std::to_string(r.iterations) + ',' + (r.ok ? csv_number(r.best_f) : "") + ',' +
-                       csv_optional(r.f_opt) + ',' + csv_optional(r.error()) + ',' +
-                       (r.evaluations_to_target ? std::to_string(*r.evaluations_to_target) : "") + ',' +
-                       join_numbers(r.best_x);
+    std::string line =
+        id + ',' + csv_field(r.algorithm) + ',' + csv_field(r.problem) + ',' + csv_field(r.budget) + ',' +
+        std::to_string(r.run_index) + ',' + std::to_string(r.seed) + ',' + (r.ok ? "ok" : "failed") + ',' +
+        std::to_string(r.evaluations) + ',' + std::to_string(r.iterations) + ',' +
+        (r.ok ? csv_number(r.best_f) : "") + ',' + csv_optional(r.f_opt) + ',' + csv_optional(r.error()) +
+        ',' + (r.evaluations_to_target ? std::to_string(*r.evaluations_to_target) : "") + ',' +
+        join_numbers(r.best_x);
     for (const auto& column : parameter_columns_) {
         std::string value;
         std::string truth;

@@ -19,8 +19,8 @@ RunRecord execute_run(const RunRequest& request) {
     record.algorithm = request.algorithm_spec;
     record.problem = request.problem_spec;
     record.run_index = request.run_index;
-    record.seed = derive_seed(request.study_seed, request.algorithm_spec, request.problem_spec,
-                              static_cast<std::uint64_t>(request.run_index));
+    record.budget = request.budget_text;
+    record.seed = request.seed;
     const Problem& problem = *request.problem;
     record.parameter_names = problem.parameter_names();
     if (const auto truth = problem.true_parameters())

@@ -20,8 +20,9 @@ struct RunRequest {
     std::string problem_spec;   // canonical
     std::int64_t run_id = 0;
     std::int64_t run_index = 0;
-    std::uint64_t study_seed = 0;
+    std::uint64_t seed = 0; // the run's stream (derived by the study from its seed mode)
     Budget budget;
+    std::string budget_text; // budget_text(budget), kept in the record
 };
 
 // Runs the request. A run that throws (other than by spending its budget) becomes a failed

@@ -1,23 +1,28 @@
 #include "runner/study.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <stdexcept>
 
 #include "problems/parameters.hpp"
+#include "problems/rng.hpp"
 #include "problems/spec.hpp"
+#include "problems/spec_grid.hpp"
 
 namespace mhb {
 namespace {
 
 // An error message may hold several lines (validate_parameters joins all of a spec's problems);
-// each becomes its own entry so the final report stays one line per problem.
-void add_lines(std::vector<std::string>& errors, const std::string& text) {
+// each becomes its own entry, prefixed with where the spec was written.
+void add_lines(std::vector<std::string>& errors, const std::string& origin, const std::string& text) {
     std::size_t start = 0;
     while (start <= text.size()) {
         const auto end = std::min(text.find('\n', start), text.size());
         if (end > start)
-            errors.push_back(text.substr(start, end - start));
+            errors.push_back((origin.empty() ? "" : origin + ": ") + text.substr(start, end - start));
         start = end + 1;
     }
 }
@@ -35,48 +40,208 @@ void check_budget(const Budget& budget, std::vector<std::string>& errors) {
         errors.push_back("budget: target = " + format_real(*budget.target_error) + " is outside [0, inf)");
 }
 
-// Parses each spec, reporting errors with the kind of component ("algorithm", "problem").
-std::vector<Spec> parse_specs(const std::vector<std::string>& texts, const char* kind,
-                              std::vector<std::string>& errors) {
-    std::vector<Spec> specs;
-    if (texts.empty())
-        errors.push_back(std::string("no ") + kind + " given");
-    for (const auto& text : texts) {
+std::string origin_of(const std::vector<std::string>& origins, std::size_t i) {
+    return i < origins.size() ? origins[i] : std::string();
+}
+
+// `spec` with its display name attached, as study files store it.
+std::string with_label(const std::string& spec, const std::string& label) {
+    if (label == spec)
+        return spec;
+    return spec + (spec.find(':') == std::string::npos ? ":" : ",") + "label=" + label;
+}
+
+// The readable name of one variant of a grid: the name with the braced values, booleans as a
+// letter and a sign (itlbo[T+S-O+]), other values as key=value (pso[w=0.4]).
+std::string grid_label(const AlgorithmRegistry::Entry& entry,
+                       const std::vector<std::pair<std::string, std::string>>& varying) {
+    std::vector<std::pair<std::string, std::string>> switches; // key, normal value
+    std::vector<std::string> others;
+    for (const auto& [key, value] : varying) {
+        const ParameterInfo& p = AlgorithmRegistry::declaration(entry, key);
+        if (p.kind == ParameterKind::boolean)
+            switches.emplace_back(key, normal_value(p, value));
+        else
+            others.push_back(key + "=" + normal_value(p, value));
+    }
+    // One capital letter per switch while the letters tell them apart; the whole key otherwise.
+    bool letters_unique = true;
+    for (std::size_t i = 0; i < switches.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            letters_unique = letters_unique && switches[i].first[0] != switches[j].first[0];
+    std::string inside;
+    for (const auto& [key, value] : switches) {
+        const std::string sign = value == "on" ? "+" : "-";
+        if (letters_unique)
+            inside += static_cast<char>(std::toupper(static_cast<unsigned char>(key[0]))) + sign;
+        else
+            inside += (inside.empty() ? "" : ",") + key + sign;
+    }
+    for (const auto& o : others)
+        inside += (inside.empty() ? "" : ",") + o;
+    return entry.name + "[" + inside + "]";
+}
+
+// Expands the algorithm specs (grids, labels), validates and builds each optimiser.
+void prepare_algorithms(const Study& study, const AlgorithmRegistry& registry, PreparedStudy& prepared,
+                        std::vector<std::string>& errors) {
+    if (study.algorithms.empty())
+        errors.emplace_back("no algorithm given");
+    std::map<std::string, std::string> where_spec;  // canonical spec -> the text that gave it
+    std::map<std::string, std::string> where_label; // label -> canonical spec
+    for (std::size_t i = 0; i < study.algorithms.size(); ++i) {
+        const std::string origin = origin_of(study.algorithm_origins, i);
+        std::vector<GridVariant> variants;
         try {
-            specs.push_back(Spec::parse(text));
+            variants = expand_grid(study.algorithms[i]);
         } catch (const std::invalid_argument& e) {
-            errors.push_back(std::string(kind) + " " + e.what());
+            add_lines(errors, origin, std::string("algorithm ") + e.what());
+            continue;
+        }
+        for (const auto& variant : variants) {
+            Spec spec;
+            try {
+                spec = Spec::parse(variant.text);
+            } catch (const std::invalid_argument& e) {
+                add_lines(errors, origin, std::string("algorithm ") + e.what());
+                continue;
+            }
+            try {
+                std::string label;
+                if (const std::string* given = spec.find("label")) {
+                    label = *given;
+                    std::erase_if(spec.parameters, [](const auto& kv) { return kv.first == "label"; });
+                    if (variants.size() > 1) {
+                        add_lines(errors, origin,
+                                  spec.name + ": label '" + label + "' would name all " +
+                                      std::to_string(variants.size()) +
+                                      " variants of the grid; leave it out (each variant gets a label of its "
+                                      "own) or write the variants one by one");
+                        break;
+                    }
+                }
+                const AlgorithmRegistry::Entry& entry = registry.find(spec.name);
+                const std::string canonical = registry.minimal(spec).canonical();
+                if (label.empty())
+                    label = variant.varying.empty() ? canonical : grid_label(entry, variant.varying);
+                if (const auto seen = where_spec.find(canonical); seen != where_spec.end()) {
+                    // The same optimiser twice would repeat the same runs, counted twice.
+                    errors.push_back((origin.empty() ? "" : origin + ": ") + "algorithm '" + variant.text +
+                                     "' is the same optimiser as '" + seen->second + "' (both are '" +
+                                     canonical + "')");
+                    continue;
+                }
+                if (const auto seen = where_label.find(label); seen != where_label.end()) {
+                    errors.push_back((origin.empty() ? "" : origin + ": ") + "algorithm label '" + label +
+                                     "' names both '" + seen->second + "' and '" + canonical + "'");
+                    continue;
+                }
+                where_spec[canonical] = variant.text;
+                where_label[label] = canonical;
+                prepared.optimizers.push_back(registry.create(spec));
+                prepared.algorithm_specs.push_back(canonical);
+                prepared.algorithms.push_back({canonical, label, registry.full(spec).canonical()});
+                prepared.study.algorithms.push_back(with_label(canonical, label));
+            } catch (const std::exception& e) {
+                add_lines(errors, origin, e.what());
+            }
         }
     }
-    return specs;
 }
 
-template <class Product>
-std::unique_ptr<Product> create_checked(const Registry<Product>& registry, const Spec& spec,
-                                        std::vector<std::string>& errors) {
-    try {
-        return registry.create(spec);
-    } catch (const std::exception& e) {
-        add_lines(errors, e.what());
-        return nullptr;
-    }
-}
-
-void reject_repeats(const std::vector<std::string>& canonical, const char* kind,
-                    std::vector<std::string>& errors) {
-    for (std::size_t i = 0; i < canonical.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j)
-            if (canonical[i] == canonical[j]) {
-                // The same spec twice would repeat the same seeds: identical runs counted twice.
-                errors.push_back(std::string(kind) + " '" + canonical[i] + "' is listed twice");
-                break;
+// Expands the problem specs (grids, then ranges), validates and builds each problem.
+void prepare_problems(const Study& study, const ProblemRegistry& registry, PreparedStudy& prepared,
+                      std::vector<std::string>& errors) {
+    if (study.problems.empty())
+        errors.emplace_back("no problem given");
+    std::map<std::string, std::string> where_full; // full spec -> canonical spec that gave it
+    for (std::size_t i = 0; i < study.problems.size(); ++i) {
+        const std::string origin = origin_of(study.problem_origins, i);
+        std::vector<GridVariant> variants;
+        try {
+            variants = expand_grid(study.problems[i]);
+        } catch (const std::invalid_argument& e) {
+            add_lines(errors, origin, std::string("problem ") + e.what());
+            continue;
+        }
+        for (const auto& variant : variants) {
+            Spec written;
+            try {
+                written = Spec::parse(variant.text);
+            } catch (const std::invalid_argument& e) {
+                add_lines(errors, origin, std::string("problem ") + e.what());
+                continue;
             }
+            prepared.study.problems.push_back(written.canonical());
+            std::vector<Spec> expanded;
+            try {
+                // Canonical order first, so that `f=1-3,i=1-2` and `i=1-2,f=1-3` number runs alike.
+                expanded = registry.expand(Spec::parse(written.canonical()));
+            } catch (const std::exception& e) {
+                add_lines(errors, origin, e.what());
+                continue;
+            }
+            for (const Spec& one : expanded) {
+                try {
+                    const std::string canonical = registry.normalised(one).canonical();
+                    const std::string full = registry.full(one).canonical();
+                    if (const auto seen = where_full.find(full); seen != where_full.end()) {
+                        errors.push_back((origin.empty() ? "" : origin + ": ") + "problem '" + canonical +
+                                         "' is the same problem as '" + seen->second + "'");
+                        continue;
+                    }
+                    where_full[full] = canonical;
+                    prepared.problems.push_back(registry.create(one));
+                    prepared.problem_specs.push_back(canonical);
+                } catch (const std::exception& e) {
+                    add_lines(errors, origin, e.what());
+                }
+            }
+        }
+    }
 }
 
 } // namespace
 
+std::string_view seed_mode_name(SeedMode mode) {
+    return mode == SeedMode::common ? "common" : "per-algorithm";
+}
+
+std::string budget_text(const Budget& budget) {
+    std::string out;
+    const auto add = [&out](const std::string& item) { out += (out.empty() ? "" : ",") + item; };
+    if (budget.max_iterations)
+        add("iterations=" + std::to_string(*budget.max_iterations));
+    if (budget.max_evaluations)
+        add("evaluations=" + std::to_string(*budget.max_evaluations));
+    if (budget.target_error)
+        add("target=" + format_real(*budget.target_error));
+    return out;
+}
+
+Budget parse_budget(std::string_view text) {
+    static const std::vector<ParameterInfo> declared = {
+        ParameterInfo::integer("iterations", 1, 1, 1000000000000000LL, "iterations after initialisation"),
+        ParameterInfo::integer("evaluations", 1, 1, 1000000000000000LL, "function evaluations"),
+        ParameterInfo::real("target", 0.0, 0.0, std::numeric_limits<double>::infinity(),
+                            "stop once f - f* <= target")};
+    const Spec spec = Spec::parse("budget:" + std::string(text));
+    const ParameterValues values = validate_parameters("budget", declared, spec);
+    Budget budget;
+    if (values.given("iterations"))
+        budget.max_iterations = values.integer("iterations");
+    if (values.given("evaluations"))
+        budget.max_evaluations = values.integer("evaluations");
+    if (values.given("target"))
+        budget.target_error = values.real("target");
+    if (!budget.max_iterations && !budget.max_evaluations)
+        throw std::invalid_argument("budget '" + std::string(text) +
+                                    "': give iterations=N and/or evaluations=N (target=E is optional)");
+    return budget;
+}
+
 std::int64_t PreparedStudy::run_count() const {
-    return static_cast<std::int64_t>(problems.size() * optimizers.size()) * study.runs;
+    return static_cast<std::int64_t>(problems.size() * optimizers.size() * study.budgets.size()) * study.runs;
 }
 
 RunRequest PreparedStudy::request(std::int64_t run_id) const {
@@ -84,10 +249,12 @@ RunRequest PreparedStudy::request(std::int64_t run_id) const {
         throw std::out_of_range("run_id " + std::to_string(run_id) + " is outside [0, " +
                                 std::to_string(run_count()) + ")");
     const auto algorithm_count = static_cast<std::int64_t>(optimizers.size());
+    const auto problem_count = static_cast<std::int64_t>(problems.size());
     const std::int64_t run_index = run_id % study.runs;
-    const std::int64_t pair = run_id / study.runs;
-    const auto a = static_cast<std::size_t>(pair % algorithm_count);
-    const auto p = static_cast<std::size_t>(pair / algorithm_count);
+    const std::int64_t cell = run_id / study.runs; // (budget * problems + problem) * algorithms + algorithm
+    const auto a = static_cast<std::size_t>(cell % algorithm_count);
+    const auto p = static_cast<std::size_t>((cell / algorithm_count) % problem_count);
+    const auto b = static_cast<std::size_t>(cell / algorithm_count / problem_count);
     RunRequest r;
     r.optimizer = optimizers[a].get();
     r.problem = problems[p].get();
@@ -95,8 +262,12 @@ RunRequest PreparedStudy::request(std::int64_t run_id) const {
     r.problem_spec = problem_specs[p];
     r.run_id = run_id;
     r.run_index = run_index;
-    r.study_seed = study.seed;
-    r.budget = study.budget;
+    const auto index = static_cast<std::uint64_t>(run_index);
+    r.seed = study.seeds == SeedMode::common
+                 ? derive_seed(study.seed, problem_specs[p], index)
+                 : derive_seed(study.seed, algorithm_specs[a], problem_specs[p], index);
+    r.budget = study.budgets[b];
+    r.budget_text = budget_texts[b];
     return r;
 }
 
@@ -107,40 +278,32 @@ PreparedStudy prepare_study(const Study& study, const AlgorithmRegistry& algorit
     prepared.study = study;
     prepared.study.algorithms.clear();
     prepared.study.problems.clear();
+    prepared.study.algorithm_origins.clear();
+    prepared.study.problem_origins.clear();
 
-    for (const Spec& spec : parse_specs(study.algorithms, "algorithm", errors)) {
-        prepared.study.algorithms.push_back(spec.canonical());
-        prepared.algorithm_specs.push_back(spec.canonical());
-        prepared.optimizers.push_back(create_checked(algorithms, spec, errors));
-    }
-    for (const Spec& spec : parse_specs(study.problems, "problem", errors)) {
-        prepared.study.problems.push_back(spec.canonical());
-        std::vector<Spec> expanded;
-        try {
-            // Canonical order first, so that `f=1-3,i=1-2` and `i=1-2,f=1-3` number runs alike.
-            expanded = problems.expand(Spec::parse(spec.canonical()));
-        } catch (const std::exception& e) {
-            add_lines(errors, e.what());
-            continue;
-        }
-        for (const Spec& one : expanded) {
-            prepared.problem_specs.push_back(one.canonical());
-            prepared.problems.push_back(create_checked(problems, one, errors));
-        }
-    }
-    reject_repeats(prepared.algorithm_specs, "algorithm", errors);
-    reject_repeats(prepared.problem_specs, "problem", errors);
+    prepare_algorithms(study, algorithms, prepared, errors);
+    prepare_problems(study, problems, prepared, errors);
 
     if (study.runs < 1 || study.runs > max_runs_per_pair)
         errors.push_back("study: runs = " + std::to_string(study.runs) + " is outside [1, " +
                          std::to_string(max_runs_per_pair) + "]");
-    check_budget(study.budget, errors);
-    if (study.budget.target_error)
+    if (study.budgets.empty())
+        errors.emplace_back("budget: give a number of iterations or of evaluations (or both)");
+    for (const Budget& budget : study.budgets) {
+        check_budget(budget, errors);
+        const std::string text = budget_text(budget);
+        if (std::find(prepared.budget_texts.begin(), prepared.budget_texts.end(), text) !=
+            prepared.budget_texts.end())
+            errors.push_back("budget '" + text + "' is listed twice");
+        prepared.budget_texts.push_back(text);
+    }
+    // A target needs f*; said once per problem, however many budgets set one.
+    if (std::any_of(study.budgets.begin(), study.budgets.end(),
+                    [](const Budget& b) { return b.target_error; }))
         for (std::size_t p = 0; p < prepared.problems.size(); ++p)
             if (prepared.problems[p] && !prepared.problems[p]->known_optimum())
                 errors.push_back("budget: a target needs a known optimum; problem '" +
                                  prepared.problem_specs[p] + "' has none");
-
     if (!errors.empty()) {
         std::string joined;
         for (const auto& e : errors)

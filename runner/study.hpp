@@ -1,41 +1,71 @@
-// A study: every algorithm spec x every problem spec x `runs` repetitions, with one study seed
-// and one budget. This is what a user describes (on the command line, in study.ini or through a
-// preset); prepare_study() checks all of it at once and builds each optimiser and problem once,
-// to be shared read-only by all their runs.
+// A study: every algorithm spec x every problem spec x every budget x `runs` repetitions, with
+// one study seed. This is what a user describes (on the command line, in a study file or through
+// a preset); prepare_study() checks all of it at once, expands grids and ranges, and builds each
+// optimiser and problem once, to be shared read-only by all their runs.
 //
-// Run numbering is fixed: run_id = (problem * algorithms + algorithm) * runs + run index, in the
-// order the specs are listed (problem ranges expanded in place). Together with the seeds derived
-// from (study seed, algorithm, problem, run index) this makes a study's results independent of
-// how many threads execute it.
+// Run numbering is fixed: run_id = ((budget * problems + problem) * algorithms + algorithm) * runs
+// + run index, in the order the specs are listed (grids and ranges expanded in place). Seeds come
+// from (study seed, problem, run index) by default — common random numbers: run r on problem p
+// starts from the same stream for every algorithm and every budget, so runs pair across them —
+// or also from the algorithm (`seeds = per-algorithm`). Either way a study's results do not
+// depend on how many threads execute it.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem_registry.hpp"
+#include "results/store.hpp"
 #include "runner/execute_run.hpp"
 
 namespace mhb {
 
+enum class SeedMode {
+    common,        // seed from (study seed, problem, run index): every algorithm shares run r's stream
+    per_algorithm, // seed from (study seed, algorithm, problem, run index)
+};
+
+// "common" or "per-algorithm", as written in study files and on the command line.
+std::string_view seed_mode_name(SeedMode mode);
+
 struct Study {
-    std::vector<std::string> algorithms; // specs, e.g. "pso:w=0.7"
-    std::vector<std::string> problems;   // specs; integer ranges allowed, e.g. "bbob:f=1-24"
-    std::int64_t runs = 20;              // repetitions of each (algorithm, problem) pair
+    // Specs as the user writes them: `pso:w=0.7`, grids `itlbo:tutorial={on,off}`, an algorithm's
+    // display name `label=...`, integer ranges in problems `bbob:f=1-24`.
+    std::vector<std::string> algorithms;
+    std::vector<std::string> problems;
+    // Where each spec was written (e.g. "ablation.ini:5"), prefixed to its errors; entries may be
+    // missing or empty (then errors carry no prefix).
+    std::vector<std::string> algorithm_origins;
+    std::vector<std::string> problem_origins;
+    std::int64_t runs = 20; // repetitions of each (algorithm, problem, budget)
     std::uint64_t seed = 1;
-    Budget budget; // iterations and/or evaluations (whichever is spent first), optional target
+    SeedMode seeds = SeedMode::common;
+    // Iterations and/or evaluations (whichever is spent first), optional target; several budgets
+    // make the budget a factor of the study, each reported separately.
+    std::vector<Budget> budgets{Budget{}};
 };
 
 inline constexpr std::int64_t max_runs_per_pair = 1000000;
 
+// A budget as text: "iterations=150", "evaluations=15050", "iterations=150,evaluations=20000",
+// with ",target=1e-08" when a target is set. RunRecord::budget and study files use it.
+std::string budget_text(const Budget& budget);
+// The inverse of budget_text (keys in any order; 1e5 is accepted). Throws std::invalid_argument
+// naming the key and the allowed range.
+Budget parse_budget(std::string_view text);
+
 // A validated study, ready to run.
 struct PreparedStudy {
-    Study study;                              // with every spec in canonical form
-    std::vector<std::string> algorithm_specs; // canonical, one per optimiser
-    std::vector<std::string> problem_specs;   // canonical, ranges expanded
+    Study study;                              // grids expanded, specs canonical: what study files store
+    std::vector<std::string> algorithm_specs; // canonical (Registry::minimal), one per optimiser
+    std::vector<AlgorithmInfo> algorithms;    // spec, label and full spec of each optimiser
+    std::vector<std::string> problem_specs;   // canonical (Registry::normalised), ranges expanded
+    std::vector<std::string> budget_texts;    // budget_text of each budget
     std::vector<std::unique_ptr<Optimizer>> optimizers;
     std::vector<std::unique_ptr<Problem>> problems;
     // Union of the problems' parameter names, in order of first appearance (runs.csv columns).
@@ -47,8 +77,9 @@ struct PreparedStudy {
 };
 
 // Validates `study` against the registries and builds its components. Every problem found is
-// reported in one std::invalid_argument, one line each, naming the component, the parameter,
-// the value and what is allowed (e.g. `random-search: parameter 'batch' = 0 is outside [1, 1e9]`).
+// reported in one std::invalid_argument, one line each, naming where the spec was written, the
+// component, the parameter, the value and what is allowed (e.g. `ablation.ini:4: pso: parameter
+// 'w' = 1.3 is outside [0, 1]`).
 PreparedStudy prepare_study(const Study& study, const AlgorithmRegistry& algorithms = builtin_algorithms(),
                             const ProblemRegistry& problems = builtin_problems());
 

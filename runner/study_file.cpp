@@ -1,101 +1,154 @@
 #include "runner/study_file.hpp"
 
-#include <boost/program_options/options_description.hpp>
 #include <boost/program_options/parsers.hpp>
-#include <charconv>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "problems/parameters.hpp"
-#include "problems/spec.hpp"
+#include "runner/study_options.hpp"
 
 namespace mhb {
+namespace {
+
+std::string trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r'))
+        s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+        s.remove_suffix(1);
+    return std::string(s);
+}
+
+struct LogicalLine {
+    std::size_t number = 0; // of its first physical line
+    std::string text;
+};
+
+// Physical lines joined into logical ones: comments removed, a trailing backslash or an indented
+// line continues the line above.
+std::vector<LogicalLine> logical_lines(std::string_view text) {
+    std::vector<LogicalLine> out;
+    bool continued = false;
+    std::size_t number = 0;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const auto end = std::min(text.find('\n', start), text.size());
+        std::string_view line = text.substr(start, end - start);
+        start = end + 1;
+        ++number;
+        line = line.substr(0, std::min(line.find('#'), line.size()));
+        const bool indented = !line.empty() && (line.front() == ' ' || line.front() == '\t');
+        std::string content = trim(line);
+        const bool continues = !content.empty() && content.back() == '\\';
+        if (continues)
+            content = trim(std::string_view(content).substr(0, content.size() - 1));
+        if ((continued || (indented && !content.empty())) && !out.empty()) {
+            if (!content.empty())
+                out.back().text += " " + content;
+        } else if (!content.empty() || continues) {
+            out.push_back({number, content});
+        }
+        continued = continues;
+    }
+    return out;
+}
+
+} // namespace
+
 std::string study_ini(const Study& study) {
-    std::string text = "# mhbench study. Run it again with: mhbench run --study-file study.ini --out DIR\n"
-                       "# Threads and output directory are not part of a study: they do not change results.\n"
-                       "# Each run's seed is derived from seed, algorithm, problem and run index.\n";
+    std::string text =
+        "# mhbench study. Run it again with: mhbench run --study-file study.ini --out DIR\n"
+        "# Threads and output directory are not part of a study: they do not change results.\n"
+        "# Seeds: 'common' derives run r's stream on problem p from (seed, problem, r) alone,\n"
+        "# the same for every algorithm; 'per-algorithm' also from the algorithm.\n";
     for (const auto& a : study.algorithms)
-        text += "algorithm = " + a + '\n';
+        text += "algorithms = " + a + '\n';
     for (const auto& p : study.problems)
-        text += "problem = " + p + '\n';
+        text += "problems = " + p + '\n';
     text += "runs = " + std::to_string(study.runs) + '\n';
     text += "seed = " + std::to_string(study.seed) + '\n';
-    if (study.budget.max_iterations)
-        text += "iterations = " + std::to_string(*study.budget.max_iterations) + '\n';
-    if (study.budget.max_evaluations)
-        text += "evaluations = " + std::to_string(*study.budget.max_evaluations) + '\n';
-    if (study.budget.target_error)
-        text += "target = " + format_real(*study.budget.target_error) + '\n';
+    text += "seeds = " + std::string(seed_mode_name(study.seeds)) + '\n';
+    for (const auto& b : study.budgets)
+        text += "budget = " + budget_text(b) + '\n';
     return text;
 }
 
-Study parse_study_ini(std::string_view text, const std::string& origin) {
-    // Boost.Program_options reads the syntax (key = value, '#' comments, sections); the values are
-    // checked here, so that every error names the file, the key and the value.
+void parse_study_file(std::string_view text, const std::string& origin, Study& study,
+                      std::vector<std::string>& errors) {
     namespace po = boost::program_options;
-    std::istringstream stream{std::string(text)};
-    po::parsed_options parsed(nullptr);
-    try {
-        const po::options_description none;
-        parsed = po::parse_config_file(stream, none, /*allow_unregistered=*/true);
-    } catch (const po::error& e) {
-        throw std::invalid_argument(origin + ": " + e.what());
-    }
-    Study study;
-    std::set<std::string> seen;
-    for (const auto& option : parsed.options) {
-        const std::string& key = option.string_key;
-        const std::string value = option.value.empty() ? std::string() : option.value.front();
-        const auto fail = [&](const std::string& why) {
-            throw std::invalid_argument(origin + ": '" + key + " = " + value + "' " + why);
-        };
-        const bool single = key != "algorithm" && key != "problem";
-        if (single && !seen.insert(key).second)
-            fail("is given twice");
-        const auto read_integer = [&]() -> std::int64_t {
-            long long v = 0;
-            if (!parse_integer(value, v))
-                fail("is not an integer");
-            return v;
-        };
-        if (key == "algorithm" || key == "problem") {
-            // Several specs may share a line, separated by spaces, as on the command line.
-            auto& list = key == "algorithm" ? study.algorithms : study.problems;
-            for (auto& spec : split_spec_list(value))
-                list.push_back(std::move(spec));
-        } else if (key == "runs") {
-            study.runs = read_integer();
-        } else if (key == "seed") {
-            const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), study.seed);
-            if (value.empty() || ec != std::errc() || ptr != value.data() + value.size())
-                fail("is not an integer in [0, 2^64)");
-        } else if (key == "iterations") {
-            study.budget.max_iterations = read_integer();
-        } else if (key == "evaluations") {
-            study.budget.max_evaluations = read_integer();
-        } else if (key == "target") {
-            double v = 0;
-            if (!parse_real(value, v))
-                fail("is not a finite number");
-            study.budget.target_error = v;
-        } else {
-            throw std::invalid_argument(origin + ": unknown key '" + key +
-                                        "'; known: algorithm, problem, runs, seed, iterations, evaluations, "
-                                        "target");
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") // a UTF-8 byte-order mark, as some editors write
+        text.remove_prefix(3);
+    const po::options_description options = study_options();
+    StudyOptionReader reader(study);
+    for (const auto& line : logical_lines(text)) {
+        const std::string where = origin + ":" + std::to_string(line.number);
+        if (line.text.front() == '[') {
+            errors.push_back(where + ": sections ('" + line.text + "') are not used in study files");
+            continue;
         }
+        if (line.text.find('=') == std::string::npos) {
+            errors.push_back(where + ": '" + line.text + "' is not key = value");
+            continue;
+        }
+        // Boost.Program_options reads the line (key, value, the option's name); one line at a
+        // time, so that every error can name its line.
+        std::istringstream stream(line.text + '\n');
+        try {
+            const po::parsed_options parsed = po::parse_config_file(stream, options, false);
+            for (const auto& option : parsed.options)
+                for (const auto& value : option.value)
+                    reader.apply(option.string_key, trim(value), where, errors);
+        } catch (const po::unknown_option&) {
+            const std::string key = trim(std::string_view(line.text).substr(0, line.text.find('=')));
+            std::string known;
+            for (const auto& o : options.options())
+                known += (known.empty() ? "" : ", ") + o->long_name();
+            const bool run_only = key == "threads" || key == "out" || key == "overwrite" || key == "quiet";
+            errors.push_back(where + ": unknown key '" + key + "'" +
+                             (run_only
+                                  ? " (it is not part of a study: give --" + key + " on the command line)"
+                                  : "; known: " + known));
+        } catch (const po::error& e) {
+            errors.push_back(where + ": " + e.what());
+        }
+    }
+    reader.finish(errors);
+}
+
+Study parse_study_ini(std::string_view text, const std::string& origin) {
+    Study study;
+    std::vector<std::string> errors;
+    parse_study_file(text, origin, study, errors);
+    if (!errors.empty()) {
+        std::string joined;
+        for (const auto& e : errors)
+            joined += (joined.empty() ? "" : "\n") + e;
+        throw std::invalid_argument(joined);
     }
     return study;
 }
 
 Study read_study_file(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw std::runtime_error(path.string() + ": is a directory, not a study file (try " +
+                                 (path / "study.ini").string() + ")");
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw std::runtime_error(path.string() + ": cannot be opened (missing?)");
+        throw std::runtime_error(path.string() + ": cannot be read (" + std::strerror(errno) + ")");
     std::ostringstream buffer;
     buffer << in.rdbuf();
     return parse_study_ini(buffer.str(), path.string());
+}
+
+std::string study_file_summary(std::string_view text) {
+    if (text.substr(0, 3) == "\xEF\xBB\xBF")
+        text.remove_prefix(3);
+    const auto end = std::min(text.find('\n'), text.size());
+    const std::string first = trim(text.substr(0, end));
+    return first.rfind('#', 0) == 0 ? trim(std::string_view(first).substr(1)) : std::string();
 }
 
 } // namespace mhb

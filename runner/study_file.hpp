@@ -1,25 +1,33 @@
-// study.ini: a study written down so that `mhbench run --study-file DIR/study.ini` runs it again.
-// The syntax is Boost.Program_options' config-file syntax (`key = value`, `#` comments), with the
-// keys of `mhbench run`'s options:
+// Study files: a study written down, in the command line's own words. The syntax is
+// Boost.Program_options' config-file syntax, one `key = value` per line, with the long names of
+// `mhbench run`'s study options (runner/study_options.hpp):
 //
-//   algorithm = pso:w=0.7        one line per algorithm, in order (a line may hold several,
-//                                separated by spaces, as on the command line)
-//   problem = sphere:dim=10      one line per problem spec, in order (ranges kept as written)
+//   # The paper's ablation: ITLBO's three components on and off   (first comment: the summary)
+//   algorithms = itlbo:tutorial={on,off},stepwise={on,off},obl={on,off}
+//   problems = pmsm:speed=2500,load=2         an indented line continues the line above
+//              pmsm:speed=2500,load=3          (so does a trailing backslash)
+//              pmsm:speed=2000,load=2
 //   runs = 20
 //   seed = 1
-//   iterations = 150             and/or
-//   evaluations = 10000
-//   target = 1e-8                optional
+//   seeds = common                             or per-algorithm
+//   budget = iterations=150                    several budgets: one line each
+//   budget = evaluations=15050
+//   iterations = 150                           or the single-budget keys, as on the command line
+//   target = 1e-8                              optional
 //
-// The thread count and the output directory are deliberately absent: they do not change the
-// results, so a study resumed or repeated with other values is the same study. The text is a
-// pure function of the study (no dates, no versions), since StudyWriter compares it byte for byte
-// to decide whether a directory holds the same study.
+// `#` starts a comment; a UTF-8 byte-order mark is skipped. Every error names the file and the
+// line. Threads and the output directory are deliberately absent: they do not change results,
+// so a study resumed or repeated with other values is the same study.
+//
+// study_ini() writes a prepared study back: grids expanded, specs canonical, labels kept. Its text
+// is a pure function of the study (no dates, no versions), since StudyWriter compares it byte for
+// byte to decide whether a directory holds the same study.
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "runner/study.hpp"
 
@@ -27,13 +35,19 @@ namespace mhb {
 
 std::string study_ini(const Study& study);
 
-// Parses study.ini text with Boost.Program_options' config-file parser. Throws
-// std::invalid_argument naming `origin` and the key on a syntax error, an unknown key, a repeated
-// single-valued key or a malformed number. Specs are checked later, by
-// prepare_study().
+// Parses study-file text on top of `study` (a default Study for a file on its own). Errors are
+// appended to `errors`, each as "ORIGIN:LINE: what is wrong"; what could be read is applied.
+void parse_study_file(std::string_view text, const std::string& origin, Study& study,
+                      std::vector<std::string>& errors);
+
+// The same, throwing std::invalid_argument with every error (one per line) if there is any.
 Study parse_study_ini(std::string_view text, const std::string& origin);
 
-// Reads and parses a study file; a file that cannot be read is a std::runtime_error.
+// Reads and parses a study file; a file that cannot be read is a std::runtime_error naming it
+// and the reason.
 Study read_study_file(const std::filesystem::path& path);
+
+// The first comment line of a study file, without '#' (a preset's one-line summary).
+std::string study_file_summary(std::string_view text);
 
 } // namespace mhb

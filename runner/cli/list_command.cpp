@@ -70,11 +70,11 @@ void print_studies(std::ostream& out) {
         out << "\n      problems:";
         for (const auto& q : p.study.problems)
             out << ' ' << q;
-        out << "\n      runs: " << p.study.runs;
-        if (p.study.budget.max_iterations)
-            out << ", iterations: " << *p.study.budget.max_iterations;
-        if (p.study.budget.max_evaluations)
-            out << ", evaluations: " << *p.study.budget.max_evaluations;
+        out << "\n      runs: " << p.study.runs << ", seeds: " << seed_mode_name(p.study.seeds)
+            << ", budgets:";
+        for (const auto& b : p.study.budgets)
+            out << ' ' << budget_text(b);
+        out << "\n      file: " << p.origin;
         out << "\n\n";
     }
 }

@@ -17,8 +17,10 @@
 
 #include "problems/parameters.hpp"
 #include "problems/spec.hpp"
+#include "results/csv.hpp"
 #include "results/report.hpp"
 #include "results/store.hpp"
+#include "runner/calibration.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/context.hpp"
@@ -26,6 +28,7 @@
 #include "runner/progress.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
+#include "runner/study_options.hpp"
 #include "runner/study_presets.hpp"
 
 namespace mhb::cli {
@@ -71,136 +74,157 @@ std::string preset_lines() {
     std::string out;
     for (const auto& p : study_presets()) {
         char line[256];
-        std::snprintf(line, sizeof line, "    %-8s %s\n", p.name.c_str(), p.summary.c_str());
+        std::snprintf(line, sizeof line, "    %-13s %s\n", p.name.c_str(), p.summary.c_str());
         out += line;
     }
     return out;
 }
 
 po::options_description make_options() {
-    po::options_description d("Options");
+    po::options_description run("Running");
     // clang-format off
-    d.add_options()
+    run.add_options()
         ("help,h", "this text")
-        ("algorithms", po::value<std::vector<std::string>>()->multitoken()->composing(),
-         "optimisers to compare, as name:key=value,...; several separated by spaces, or the option "
-         "repeated (see `mhbench list algorithms`)")
-        ("algorithm", po::value<std::vector<std::string>>()->multitoken()->composing(), "same as --algorithms")
-        ("problems", po::value<std::vector<std::string>>()->multitoken()->composing(),
-         "problems, as name:key=value,...; integer parameters may be ranges, e.g. f=1-24 "
-         "(see `mhbench list problems`)")
-        ("problem", po::value<std::vector<std::string>>()->multitoken()->composing(), "same as --problems")
-        ("runs", po::value<std::string>(), "runs of each algorithm on each problem (default 20)")
-        ("seed", po::value<std::string>(), "study seed, 0 to 2^64-1; every run's seed is derived from it (default 1)")
-        ("iterations", po::value<std::string>(),
-         "budget: iterations per run after the initialisation (iteration 0). A study needs "
-         "--iterations or --evaluations; a preset brings its own")
-        ("evaluations", po::value<std::string>(),
-         "budget: function evaluations per run (1e5 is accepted); with --iterations, whichever is spent "
-         "first ends the run. "
-         "Either replaces both of a preset's budget values")
-        ("target", po::value<double>(), "also stop a run once best f - f* <= this (problems with a known optimum)")
+        ("study", po::value<std::string>(), "start from a preset (see below); other options override its values")
+        ("study-file", po::value<std::string>(),
+         "start from a study file (scripts/studies/*.ini are examples, DIR/study.ini of an earlier study "
+         "another); other options override its values")
+        ("dry-run", po::bool_switch(),
+         "print the expanded study (algorithms with their labels, problems, budgets, runs, evaluations and a "
+         "time estimate from a short calibration) and run nothing")
         ("threads", po::value<int>(), "worker threads (default: all hardware threads); results do not depend on it")
         ("out", po::value<std::string>(), "study directory (default: studies/<preset name, or 'study'>)")
         ("overwrite", po::bool_switch(), "replace a finished study (or another study's unfinished one) in --out")
-        ("study", po::value<std::string>(), "start from a preset (see below); other options override its values")
-        ("study-file", po::value<std::string>(),
-         "start from a study file, e.g. DIR/study.ini of an earlier study; other options override its values")
         ("progress", po::bool_switch(), "show the progress bar even when stderr is not a terminal")
         ("no-report", po::bool_switch(), "do not build the report (tables, curve data, figures) after the study; "
                                          "`mhbench report DIR` builds it at any time")
         ("no-figures", po::bool_switch(), "build the report without figures (they take most of its time)")
         ("quiet,q", po::bool_switch(), "print nothing but errors (no progress bar, no summary, no tables)");
     // clang-format on
-    return d;
+    po::options_description all;
+    all.add(study_options()).add(run);
+    return all;
 }
 
 void print_help(const po::options_description& options) {
-    std::cout << "Usage: mhbench run [options]\n\n"
-                 "Runs every algorithm on every problem, --runs times each, into a study directory\n"
-                 "(study.ini, context.ini, runs.csv, curves.csv, checkpoints.csv, trajectories.csv,\n"
-                 "timings.csv). The whole study is checked first and every error reported at once.\n"
-                 "Results are identical for any --threads. Ctrl-C keeps the finished runs; running\n"
-                 "the same command again resumes the study.\n\n"
-              << options << "\nStudy presets (--study NAME):\n"
-              << preset_lines()
-              << "\nExamples:\n"
-                 "  mhbench run --study paper\n"
-                 "  mhbench run --study paper --evaluations 37500 --out studies/paper-equal-evals\n"
-                 "  mhbench run --algorithms \"itlbo tlbo:np=30\" --algorithms pso:w=0.7 \\\n"
-                 "              --problems sphere:dim=10 --iterations 200 --runs 30 --out studies/sphere\n"
-                 "  mhbench run --study-file studies/sphere/study.ini --threads 1 --out /tmp/again\n";
+    std::cout
+        << "Usage: mhbench run [options]\n\n"
+           "Runs every algorithm on every problem under every budget, --runs times each, into a\n"
+           "study directory (study.ini, context.ini, algorithms.csv, runs.csv, curves.csv, ...).\n"
+           "The whole study, command line and study file together, is checked first and every\n"
+           "error reported at once. By default every algorithm starts run r on a problem from the\n"
+           "same random stream (common random numbers), so runs pair across algorithms and the\n"
+           "report uses paired tests. Results are identical for any --threads. Ctrl-C keeps the\n"
+           "finished runs; running the same command again resumes the study.\n\n"
+        << options << "\nStudy presets (--study NAME; the files are in scripts/studies/):\n"
+        << preset_lines()
+        << "\nExamples:\n"
+           "  mhbench run --study paper\n"
+           "  mhbench run --study ablation --dry-run\n"
+           "  mhbench run --study paper --evaluations 37500 --out studies/paper-equal-evals\n"
+           "  mhbench run --algorithms \"itlbo:tutorial={on,off},obl={on,off} tlbo\" \\\n"
+           "              --problems sphere:dim=10 --budget iterations=200 --budget evaluations=2e4 \\\n"
+           "              --runs 30 --out studies/sphere\n"
+           "  mhbench run --study-file studies/sphere/study.ini --threads 1 --out /tmp/again\n";
 }
 
-std::vector<std::string> spec_list(const po::variables_map& vm, const char* plural, const char* singular) {
-    std::vector<std::string> specs;
-    for (const char* key : {plural, singular})
-        if (vm.count(key) != 0)
-            for (const auto& text : vm[key].as<std::vector<std::string>>())
-                for (auto& spec : split_spec_list(text))
-                    specs.push_back(std::move(spec));
-    return specs;
-}
-
-// The study to start from: a preset, a study file, or an empty study. False if it could not be read.
+// The study to start from: a preset, a study file, or an empty study. False if none could be read.
 bool load_base_study(const po::variables_map& vm, Study& study, std::string& name,
                      std::vector<std::string>& errors) {
     name = "study";
-    try {
-        if (vm.count("study") != 0 && vm.count("study-file") != 0) {
-            errors.emplace_back("give --study or --study-file, not both");
-            return false;
-        }
-        if (vm.count("study") != 0) {
+    if (vm.count("study") != 0 && vm.count("study-file") != 0) {
+        errors.emplace_back("give --study or --study-file, not both");
+        return false;
+    }
+    if (vm.count("study") != 0) {
+        try {
             const StudyPreset& preset = find_study_preset(vm["study"].as<std::string>());
             study = preset.study;
             name = preset.name;
-        } else if (vm.count("study-file") != 0) {
-            study = read_study_file(vm["study-file"].as<std::string>());
+        } catch (const std::exception& e) {
+            errors.emplace_back(e.what());
+            return false;
         }
-    } catch (const std::exception& e) {
-        errors.emplace_back(e.what()); // reported with the option errors below
-        return false;
+    } else if (vm.count("study-file") != 0) {
+        const std::filesystem::path path = vm["study-file"].as<std::string>();
+        std::string text;
+        try {
+            text = read_whole_file(path);
+        } catch (const std::exception& e) {
+            errors.emplace_back(e.what());
+            return false;
+        }
+        // Every error of the file is kept, with its line, and reported with the command line's.
+        parse_study_file(text, path.string(), study, errors);
     }
     return true;
 }
 
-// The options given on the command line, on top of the base study.
+// The study options given on the command line, on top of the base study.
 void apply_options(const po::variables_map& vm, Study& study, std::vector<std::string>& errors) {
-    if (auto a = spec_list(vm, "algorithms", "algorithm"); !a.empty())
-        study.algorithms = std::move(a);
-    if (auto p = spec_list(vm, "problems", "problem"); !p.empty())
-        study.problems = std::move(p);
-    // Integers may be written 1e5, as in specs; range checks come with the study's validation.
-    const auto integer_option = [&](const char* key) -> std::optional<std::int64_t> {
+    StudyOptionReader reader(study);
+    const po::options_description declared = study_options();
+    for (const auto& option : declared.options()) {
+        const std::string& key = option->long_name();
         if (vm.count(key) == 0)
-            return std::nullopt;
-        const auto& text = vm[key].as<std::string>();
-        long long value = 0;
-        if (!parse_integer(text, value)) {
-            errors.push_back(std::string(key) + " = " + text + " is not an integer");
-            return std::nullopt;
-        }
-        return value;
-    };
-    if (const auto runs = integer_option("runs"))
-        study.runs = *runs;
-    if (vm.count("seed") != 0) {
-        const auto& text = vm["seed"].as<std::string>();
-        std::istringstream in(text);
-        std::uint64_t seed = 0;
-        if (text.empty() || text[0] == '-' || !(in >> seed) || !in.eof())
-            errors.push_back("seed = " + text + " is not an integer in [0, 2^64)");
-        study.seed = seed;
+            continue;
+        if (const auto* many = boost::any_cast<std::vector<std::string>>(&vm[key].value()))
+            for (const auto& value : *many)
+                reader.apply(key, value, "", errors);
+        else
+            reader.apply(key, vm[key].as<std::string>(), "", errors);
     }
-    if (vm.count("iterations") != 0 || vm.count("evaluations") != 0) {
-        study.budget.max_iterations.reset();
-        study.budget.max_evaluations.reset();
-        study.budget.max_iterations = integer_option("iterations");
-        study.budget.max_evaluations = integer_option("evaluations");
+    reader.finish(errors);
+}
+
+std::string count_text(double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, value < 1e6 ? "%.0f" : "%.3g", value);
+    return text;
+}
+
+// --dry-run: what the study is, what it costs, where it goes; nothing is run or written.
+void print_dry_run(const PreparedStudy& prepared, const std::filesystem::path& dir, int threads) {
+    const Study& s = prepared.study;
+    std::cout << "mhbench run --dry-run: nothing is run or written.\n\n"
+              << "study: " << prepared.optimizers.size() << " algorithms x " << prepared.problems.size()
+              << " problems x " << s.budgets.size() << " budget" << (s.budgets.size() == 1 ? "" : "s")
+              << " x " << s.runs << " runs = " << prepared.run_count() << " runs; seed " << s.seed
+              << ", seeds " << seed_mode_name(s.seeds)
+              << (s.seeds == SeedMode::common ? " (every algorithm starts run r from the same stream)\n"
+                                              : " (each algorithm its own streams)\n");
+    std::size_t width = 5;
+    for (const auto& a : prepared.algorithms)
+        width = std::max(width, a.label.size());
+    std::cout << "\nalgorithms (label, canonical spec):\n";
+    for (const auto& a : prepared.algorithms)
+        std::cout << "  " << a.label << std::string(width - a.label.size() + 2, ' ') << a.spec << '\n';
+    std::cout << "\nproblems (" << prepared.problem_specs.size() << "):\n";
+    const std::size_t shown = prepared.problem_specs.size() > 12 ? 10 : prepared.problem_specs.size();
+    for (std::size_t p = 0; p < shown; ++p)
+        std::cout << "  " << prepared.problem_specs[p] << '\n';
+    if (shown < prepared.problem_specs.size())
+        std::cout << "  ... and " << prepared.problem_specs.size() - shown << " more, to "
+                  << prepared.problem_specs.back() << '\n';
+    const StudyEstimate estimate = estimate_study(prepared);
+    std::cout << "\nbudgets:\n";
+    for (std::size_t b = 0; b < s.budgets.size(); ++b) {
+        const auto& e = estimate.budgets[b];
+        std::cout << "  " << prepared.budget_texts[b] << ": " << (e.exact ? "" : "about ")
+                  << count_text(e.evaluations) << " evaluations\n";
     }
-    if (vm.count("target") != 0)
-        study.budget.target_error = vm["target"].as<double>();
+    const double seconds = estimate.cpu_seconds() / std::max(threads, 1);
+    char line[160];
+    std::snprintf(line, sizeof line, "%s evaluations, roughly %.3g s on %d thread%s",
+                  count_text(estimate.evaluations()).c_str(), seconds, threads, threads == 1 ? "" : "s");
+    std::cout << "\ntotal: " << line << " (calibrated on " << estimate.calibration_runs << " short runs)\n";
+    std::cout << "output: " << dir.string();
+    if (std::filesystem::exists(dir / StudyFiles::runs))
+        std::cout << " (holds a finished study: the run needs --overwrite or another --out)\n";
+    else if (std::filesystem::exists(dir / StudyFiles::journal))
+        std::cout << " (holds an unfinished study: the run resumes it if it is this one)\n";
+    else
+        std::cout << '\n';
 }
 
 void print_summary(const std::filesystem::path& dir, const RunnerOutcome& outcome, double wall_seconds) {
@@ -248,18 +272,17 @@ int run_run_command(const std::vector<std::string>& args) {
         try {
             prepared = prepare_study(study);
         } catch (const std::invalid_argument& e) {
+            // A malformed budget was reported already; "give a budget" would repeat it.
+            const bool budget_reported =
+                std::any_of(errors.begin(), errors.end(), [](const std::string& earlier) {
+                    return earlier.find("iterations = ") != std::string::npos ||
+                           earlier.find("evaluations = ") != std::string::npos ||
+                           earlier.find("budget") != std::string::npos;
+                });
             std::istringstream in(e.what());
-            for (std::string line; std::getline(in, line);) {
-                // A malformed --iterations/--evaluations was reported already; "no budget" would repeat it.
-                const bool budget_echo =
-                    line.rfind("budget: give", 0) == 0 &&
-                    std::any_of(errors.begin(), errors.end(), [](const std::string& earlier) {
-                        return earlier.rfind("iterations = ", 0) == 0 ||
-                               earlier.rfind("evaluations = ", 0) == 0;
-                    });
-                if (!budget_echo)
+            for (std::string line; std::getline(in, line);)
+                if (!(budget_reported && line.rfind("budget: give", 0) == 0))
                     errors.push_back(line);
-            }
         }
     }
     if (!errors.empty()) {
@@ -270,12 +293,16 @@ int run_run_command(const std::vector<std::string>& args) {
 
     threads = resolve_thread_count(threads);
     const std::filesystem::path dir = vm.count("out") != 0 ? vm["out"].as<std::string>() : "studies/" + name;
+    if (vm["dry-run"].as<bool>()) {
+        print_dry_run(*prepared, dir, threads);
+        return exit_ok;
+    }
     std::vector<std::string> command_line{"mhbench", "run"};
     command_line.insert(command_line.end(), args.begin(), args.end());
     // From here on Ctrl-C means "stop after the runs under way"; before, it just ends the process.
     const StopSignals signals;
     StudyWriter writer(dir, study_ini(prepared->study), context_ini(threads, command_line),
-                       prepared->parameter_columns, vm["overwrite"].as<bool>());
+                       prepared->parameter_columns, vm["overwrite"].as<bool>(), prepared->algorithms);
 
     const bool quiet = vm["quiet"].as<bool>();
     const bool forced = vm["progress"].as<bool>();

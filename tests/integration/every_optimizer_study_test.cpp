@@ -28,7 +28,7 @@ Study every_optimizer_study() {
     study.problems = {"sphere:dim=5", "rastrigin:dim=5,shift=1,instance=11", "pmsm:speed=2500,load=2"};
     study.runs = 2;
     study.seed = 7;
-    study.budget.max_evaluations = 700;
+    study.budgets.front().max_evaluations = 700;
     return study;
 }
 

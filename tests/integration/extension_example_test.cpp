@@ -88,7 +88,7 @@ TEST(ExtensionExample, OwnProblemAndOptimiserRunInAStudyBesideBuiltInOnes) {
     study.algorithms = {"one-plus-one:step=0.5", "tlbo:np=10"};
     study.problems = {"booth", "sphere:dim=2"};
     study.runs = 3;
-    study.budget.max_evaluations = 2000;
+    study.budgets.front().max_evaluations = 2000;
     const mhb::PreparedStudy prepared = mhb::prepare_study(study, algorithms, problems);
     const auto dir = std::filesystem::temp_directory_path() / ("mhb_extension_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
@@ -102,9 +102,12 @@ TEST(ExtensionExample, OwnProblemAndOptimiserRunInAStudyBesideBuiltInOnes) {
         EXPECT_LT(*r.error(), r.algorithm.rfind("tlbo", 0) == 0 ? 1e-10 : 1e-2)
             << r.algorithm << " on " << r.problem;
     }
-    EXPECT_THROW((void)mhb::prepare_study(mhb::Study{{"one-plus-one:step=0"}, {"booth"}, 1, 1, study.budget},
-                                          algorithms, problems),
-                 std::invalid_argument);
+    EXPECT_THROW(
+        (void)mhb::prepare_study(
+            mhb::Study{
+                {"one-plus-one:step=0"}, {"booth"}, {}, {}, 1, 1, mhb::SeedMode::common, study.budgets},
+            algorithms, problems),
+        std::invalid_argument);
     std::filesystem::remove_all(dir);
 }
 

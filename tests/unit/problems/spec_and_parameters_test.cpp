@@ -3,6 +3,7 @@
 
 #include "problems/problem_registry.hpp"
 #include "problems/spec.hpp"
+#include "problems/spec_grid.hpp"
 
 namespace mhb {
 namespace {

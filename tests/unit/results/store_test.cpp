@@ -38,6 +38,36 @@ RunRecord make_record(std::int64_t id) {
     return r;
 }
 
+TEST(Store, KeepsEachRunsBudgetAndTheStudysAlgorithms) {
+    const fs::path dir = fresh_dir("budgets");
+    const std::vector<AlgorithmInfo> algorithms = {
+        {"itlbo:obl=off", "itlbo[O-]", "itlbo:np=50,obl=off,p=0.1"},
+        {"tlbo", "TLBO, \"plain\"", "tlbo:np=50"}};
+    {
+        StudyWriter w(dir, "s\n", "", {}, false, algorithms);
+        RunRecord a = make_record(0);
+        a.budget = "iterations=150";
+        RunRecord b = make_record(1);
+        b.budget = "evaluations=15050,target=1e-08";
+        w.append(b, 0.0);
+        w.append(a, 0.0);
+        w.finish();
+    }
+    const StudyData data = load_study(dir);
+    ASSERT_EQ(data.runs.size(), 2u);
+    EXPECT_EQ(data.runs[0].budget, "iterations=150");
+    EXPECT_EQ(data.runs[1].budget, "evaluations=15050,target=1e-08");
+    ASSERT_EQ(data.algorithms.size(), 2u);
+    for (std::size_t i = 0; i < algorithms.size(); ++i) {
+        EXPECT_EQ(data.algorithms[i].spec, algorithms[i].spec);
+        EXPECT_EQ(data.algorithms[i].label, algorithms[i].label);
+        EXPECT_EQ(data.algorithms[i].full_spec, algorithms[i].full_spec);
+    }
+    // A study written again without algorithm information leaves no stale algorithms.csv behind.
+    StudyWriter again(dir, "s\n", "", {}, true);
+    EXPECT_FALSE(fs::exists(dir / StudyFiles::algorithms));
+}
+
 TEST(Store, RoundTripsRecordsExactlyAndSortsByRunId) {
     const fs::path dir = fresh_dir("roundtrip");
     {

@@ -32,8 +32,8 @@ PreparedStudy make_study() {
     s.problems = {"sphere:dim=2", "sphere:dim=3"};
     s.runs = 4;
     s.seed = 7;
-    s.budget.max_iterations = 20;
-    s.budget.max_evaluations = 150; // both: the evaluations end the batch=9 runs first
+    s.budgets.front().max_iterations = 20;
+    s.budgets.front().max_evaluations = 150; // both: the evaluations end the batch=9 runs first
     return prepare_study(s);
 }
 
@@ -70,7 +70,7 @@ TEST(ParallelRunner, RunsEveryRunOnceAndFinishesTheStudy) {
         const RunRecord& r = data.runs[i];
         EXPECT_EQ(r.run_id, static_cast<std::int64_t>(i));
         EXPECT_TRUE(r.ok) << r.message;
-        EXPECT_EQ(r.seed, derive_seed(7, r.algorithm, r.problem, static_cast<std::uint64_t>(r.run_index)));
+        EXPECT_EQ(r.seed, derive_seed(7, r.problem, static_cast<std::uint64_t>(r.run_index)));
         // The budget is exact: batch=5 reaches 150 evaluations at iteration 29 > 20, so it stops on
         // iterations (5 + 20 * 5 = 105); batch=9 spends exactly 150 evaluations first.
         EXPECT_EQ(r.evaluations, r.algorithm == "random-search:batch=5" ? 105 : 150) << r.algorithm;
@@ -145,7 +145,7 @@ TEST(ParallelRunner, AFailingRunBecomesAFailedRecordAndTheStudyGoesOn) {
     s.algorithms = {"random-search:batch=3"};
     s.problems = {"nan"};
     s.runs = 3;
-    s.budget.max_iterations = 50; // 153 uniform draws: a value above 0.5 is all but certain
+    s.budgets.front().max_iterations = 50; // 153 uniform draws: a value above 0.5 is all but certain
     const PreparedStudy study = prepare_study(s, builtin_algorithms(), problems);
     const fs::path dir = fresh_dir("failing");
     const RunnerOutcome outcome = run_into(dir, study, {});

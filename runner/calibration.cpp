@@ -1,0 +1,82 @@
+#include "runner/calibration.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "runner/execute_run.hpp"
+
+namespace mhb {
+
+double StudyEstimate::evaluations() const {
+    double total = 0;
+    for (const auto& b : budgets)
+        total += b.evaluations;
+    return total;
+}
+
+double StudyEstimate::cpu_seconds() const {
+    double total = 0;
+    for (const auto& b : budgets)
+        total += b.cpu_seconds;
+    return total;
+}
+
+StudyEstimate estimate_study(const PreparedStudy& study, std::size_t problems_per_algorithm) {
+    StudyEstimate estimate;
+    const std::size_t algorithms = study.optimizers.size();
+    const std::size_t problems = study.problems.size();
+    const std::size_t budgets = study.study.budgets.size();
+    const double runs = static_cast<double>(study.study.runs);
+    // Problems spread evenly over the list (first and last included), each used once.
+    std::vector<std::size_t> sample;
+    const std::size_t count = std::min(problems, std::max<std::size_t>(problems_per_algorithm, 1));
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t p = count == 1 ? 0 : i * (problems - 1) / (count - 1);
+        if (sample.empty() || sample.back() != p)
+            sample.push_back(p);
+    }
+    estimate.budgets.resize(budgets);
+    for (std::size_t b = 0; b < budgets; ++b) {
+        const Budget& budget = study.study.budgets[b];
+        BudgetEstimate& out = estimate.budgets[b];
+        out.exact = budget.max_evaluations && !budget.max_iterations && !budget.target_error;
+        for (std::size_t a = 0; a < algorithms; ++a) {
+            double evaluations = 0; // per run, averaged over the sampled problems
+            double seconds = 0;
+            for (const std::size_t p : sample) {
+                const auto run_id =
+                    static_cast<std::int64_t>(((b * problems + p) * algorithms + a)) * study.study.runs;
+                RunRequest request = study.request(run_id);
+                request.budget.max_iterations = std::min<std::int64_t>(budget.max_iterations.value_or(3), 3);
+                request.budget.max_evaluations =
+                    std::min<std::int64_t>(budget.max_evaluations.value_or(2000), 2000);
+                request.budget.target_error.reset();
+                const auto started = std::chrono::steady_clock::now();
+                const RunRecord record = execute_run(request);
+                const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
+                ++estimate.calibration_runs;
+                if (!record.ok || record.evaluations <= 0)
+                    continue;
+                // Evaluations of the initialisation (iteration 0) and per iteration after it.
+                const double initial =
+                    record.curve.empty() ? 0.0 : static_cast<double>(record.curve.front().evaluations);
+                const double per_iteration = record.iterations > 0
+                                                 ? (static_cast<double>(record.evaluations) - initial) /
+                                                       static_cast<double>(record.iterations)
+                                                 : static_cast<double>(record.evaluations);
+                double full = budget.max_evaluations ? static_cast<double>(*budget.max_evaluations) : 1e300;
+                if (budget.max_iterations)
+                    full =
+                        std::min(full, initial + per_iteration * static_cast<double>(*budget.max_iterations));
+                evaluations += full;
+                seconds += full * wall.count() / static_cast<double>(record.evaluations);
+            }
+            const double share = static_cast<double>(problems) / static_cast<double>(sample.size());
+            out.evaluations += evaluations * share * runs;
+            out.cpu_seconds += seconds * share * runs;
+        }
+    }
+    return estimate;
+}
+
+} // namespace mhb
