@@ -44,9 +44,13 @@ std::string percent_text(double fraction) {
 struct Comparison {
     std::string problem;
     std::string algorithm;
-    TestResult test;
+    TestResult test; // rank-sum, always
     double adjusted_p = 1.0;
     double a12 = 0.5;
+    bool paired = false; // the problem's runs are paired by seed: the signed-rank test decides
+    std::size_t pairs = 0;
+    TestResult paired_test; // signed-rank on the paired differences (algorithm - reference)
+    double paired_adjusted_p = 1.0;
     std::string marker;
 };
 
@@ -56,21 +60,42 @@ std::vector<Comparison> compare_with_reference(const StudyIndex& index, const Co
         const RunGroup* reference = index.find(p, options.reference);
         if (reference == nullptr)
             continue;
+        const bool paired = index.paired(p);
         std::vector<Comparison> family;
+        std::vector<std::size_t> nonzero;
         for (const auto& a : index.algorithms_on(p)) {
             if (a == options.reference)
                 continue;
-            const auto x = index.find(p, a)->final_values();
+            const RunGroup& group = *index.find(p, a);
+            const auto x = group.final_values();
             const auto y = reference->final_values();
-            family.push_back({p, a, rank_sum_test(x, y), 1.0, vargha_delaney_a12(x, y), ""});
+            Comparison c{p,      a, rank_sum_test(x, y), 1.0, vargha_delaney_a12(x, y),
+                         paired, 0, TestResult{},        1.0, ""};
+            std::size_t differing = 0;
+            if (paired) {
+                const PairedValues pairs = paired_final_values(group, *reference);
+                c.pairs = pairs.x.size();
+                c.paired_test = signed_rank_test(pairs.x, pairs.y);
+                for (std::size_t i = 0; i < pairs.x.size(); ++i)
+                    differing += pairs.x[i] != pairs.y[i] ? 1U : 0U;
+            }
+            family.push_back(std::move(c));
+            nonzero.push_back(differing);
         }
         std::vector<double> raw;
-        for (const auto& c : family)
+        std::vector<double> paired_raw;
+        for (const auto& c : family) {
             raw.push_back(c.test.p_value);
+            paired_raw.push_back(c.paired_test.p_value);
+        }
         const auto adjusted = holm_adjust(raw);
+        const auto paired_adjusted = holm_adjust(paired_raw);
         for (std::size_t i = 0; i < family.size(); ++i) {
             family[i].adjusted_p = adjusted[i];
-            family[i].marker = comparison_marker(adjusted[i], family[i].a12, options.alpha);
+            family[i].paired_adjusted_p = paired_adjusted[i];
+            family[i].marker = paired ? signed_rank_marker(paired_adjusted[i], family[i].paired_test,
+                                                           nonzero[i], options.alpha)
+                                      : comparison_marker(adjusted[i], family[i].a12, options.alpha);
             all.push_back(family[i]);
         }
     }
@@ -89,7 +114,7 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
         if (g.runs.empty()) {
             std::vector<TableCell> row(t.header.size(), empty_cell());
             row[0] = text_cell(g.problem);
-            row[1] = text_cell(g.algorithm);
+            row[1] = text_cell(index.label(g.algorithm));
             row[2] = text_cell("0/" + std::to_string(g.failed));
             t.add_row(std::move(row));
             continue;
@@ -120,7 +145,7 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
                 has_target = has_target || r->evaluations_to_target.has_value();
         std::vector<TableCell> row = {
             text_cell(g.problem),
-            text_cell(g.algorithm),
+            text_cell(index.label(g.algorithm)),
             text_cell(std::to_string(g.runs.size()) + "/" + std::to_string(g.runs.size() + g.failed)),
             number_cell(mean(evaluations), 6),
             number_cell(s.mean),
@@ -150,24 +175,77 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
     return t;
 }
 
-Table tests_table(const std::vector<Comparison>& comparisons, const ComparisonOptions& options) {
+Table tests_table(const StudyIndex& index, const std::vector<Comparison>& comparisons,
+                  const ComparisonOptions& options) {
     Table t;
     t.id = "tests";
-    t.title = "Tests against the reference " + options.reference;
-    t.header = {"Problem", "Algorithm", "Test", "W", "z", "p", "p (Holm)", "A12", "Result"};
-    for (const auto& c : comparisons)
-        t.add_row({text_cell(c.problem), text_cell(c.algorithm), text_cell(c.test.name),
-                   number_cell(c.test.statistic, 6), c.test.exact ? empty_cell() : number_cell(c.test.z, 4),
-                   number_cell(c.test.p_value, 3), number_cell(c.adjusted_p, 3), number_cell(c.a12, 3),
-                   text_cell(c.marker)});
-    t.caption =
+    t.title = "Tests against the reference " + index.label(options.reference);
+    t.header = {"Problem",
+                "Algorithm",
+                "Rank-sum test",
+                "W",
+                "z",
+                "p",
+                "p (Holm)",
+                "A12",
+                "Paired runs",
+                "Signed-rank test",
+                "V",
+                "Signed-rank z",
+                "Signed-rank p",
+                "Signed-rank p (Holm)",
+                "Result",
+                "Result by"};
+    bool any_paired = false;
+    bool any_unpaired = false;
+    for (const auto& c : comparisons) {
+        any_paired = any_paired || c.paired;
+        any_unpaired = any_unpaired || !c.paired;
+        std::vector<TableCell> row = {text_cell(c.problem),
+                                      text_cell(index.label(c.algorithm)),
+                                      text_cell(c.test.name),
+                                      number_cell(c.test.statistic, 6),
+                                      c.test.exact ? empty_cell() : number_cell(c.test.z, 4),
+                                      number_cell(c.test.p_value, 3),
+                                      number_cell(c.adjusted_p, 3),
+                                      number_cell(c.a12, 3)};
+        if (c.paired) {
+            row.push_back(text_cell(std::to_string(c.pairs)));
+            row.push_back(text_cell(c.paired_test.name));
+            row.push_back(number_cell(c.paired_test.statistic, 6));
+            row.push_back(c.paired_test.exact ? empty_cell() : number_cell(c.paired_test.z, 4));
+            row.push_back(number_cell(c.paired_test.p_value, 3));
+            row.push_back(number_cell(c.paired_adjusted_p, 3));
+        } else {
+            row.push_back(text_cell("no (seeds differ)"));
+            for (int i = 0; i < 5; ++i)
+                row.push_back(empty_cell());
+        }
+        row.push_back(text_cell(c.marker));
+        row.push_back(text_cell(c.paired ? "signed-rank" : "rank-sum"));
+        t.add_row(std::move(row));
+    }
+    std::string caption =
         "Two-sided Wilcoxon rank-sum test (Mann-Whitney U; W = U of the algorithm) of each algorithm's "
-        "final values against the reference's, Holm-adjusted across the comparisons of each problem, "
-        "alpha = " +
-        alpha_text(options.alpha) +
-        ". A12 = Vargha-Delaney effect size P(algorithm > reference) + P(=)/2 (below 0.5: the algorithm "
-        "tends to lower, better values). +: significantly better than the reference, -: significantly "
-        "worse, =: no significant difference.";
+        "final values against the reference's, Holm-adjusted across the comparisons of each problem; A12 = "
+        "Vargha-Delaney effect size P(algorithm > reference) + P(=)/2 (below 0.5: the algorithm tends to "
+        "lower, better values).";
+    if (any_paired)
+        caption +=
+            " Where the runs are paired (every algorithm's run r on the problem has the same seed: common "
+            "random numbers), also the two-sided Wilcoxon signed-rank test of the paired differences "
+            "algorithm - reference over the run indices both completed (V = sum of the ranks of positive "
+            "differences; zero differences dropped, as R's wilcox.test(paired = TRUE)), Holm-adjusted across "
+            "the comparisons of each problem.";
+    caption += std::string(" Result (alpha = ") + alpha_text(options.alpha) +
+               ") from the test named in \"Result by\": " +
+               (any_paired && any_unpaired ? "the signed-rank test where runs are paired, the rank-sum test "
+                                             "where they are not"
+                                           : (any_paired ? "the signed-rank test (all runs paired)"
+                                                         : "the rank-sum test (no runs paired)")) +
+               ". +: significantly better than the reference, -: significantly worse, =: no significant "
+               "difference.";
+    t.caption = std::move(caption);
     return t;
 }
 
@@ -178,8 +256,11 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
     t.title = "Final values: mean (std) per problem and algorithm";
     t.header = {"Problem"};
     for (const auto& a : index.algorithms())
-        t.header.push_back(a == options.reference ? a + " (reference)" : a);
+        t.header.push_back(a == options.reference ? index.label(a) + " (reference)" : index.label(a));
+    t.header.push_back("Markers by");
     std::size_t least_runs = SIZE_MAX;
+    bool any_paired = false;
+    bool any_unpaired = false;
     std::size_t most_runs = 0;
     for (const auto& p : index.problems()) {
         std::vector<TableCell> row = {text_cell(p)};
@@ -204,16 +285,34 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
                            s.mean == best};
             row.push_back(cell);
         }
+        const bool compared = std::any_of(comparisons.begin(), comparisons.end(),
+                                          [&](const Comparison& c) { return c.problem == p; });
+        const bool paired = index.paired(p);
+        any_paired = any_paired || (compared && paired);
+        any_unpaired = any_unpaired || (compared && !paired);
+        row.push_back(text_cell(!compared ? "" : (paired ? "signed-rank (paired)" : "rank-sum")));
         t.add_row(std::move(row));
     }
     const std::string runs = least_runs == most_runs || least_runs == SIZE_MAX
                                  ? std::to_string(most_runs)
                                  : std::to_string(least_runs) + "-" + std::to_string(most_runs);
+    std::string tests;
+    if (any_paired)
+        tests = "two-sided Wilcoxon signed-rank test of the paired differences (runs paired by seed: common "
+                "random numbers)";
+    if (any_paired && any_unpaired)
+        tests += " on the problems marked so, ";
+    if (any_unpaired)
+        tests += "two-sided Wilcoxon rank-sum test (Mann-Whitney U)";
+    if (any_paired && any_unpaired)
+        tests += " on the others (seeds differ)";
+    if (tests.empty())
+        tests = "none (no problem has runs of the reference and another algorithm)";
     t.caption = "Mean (sample std) of the final best-so-far value over " + runs +
-                " runs; lowest mean in bold. Markers against the reference " + options.reference +
-                ": two-sided Wilcoxon rank-sum test (Mann-Whitney U), Holm correction across each problem's "
-                "comparisons, alpha = " +
-                alpha_text(options.alpha) + "; + better, - worse, = no significant difference.";
+                " runs; lowest mean in bold. Markers against the reference " +
+                index.label(options.reference) + ": " + tests +
+                ", Holm correction across each problem's comparisons, alpha = " + alpha_text(options.alpha) +
+                "; + better, - worse, = no significant difference.";
     return t;
 }
 
@@ -247,7 +346,8 @@ std::optional<Table> across_problems_table(const StudyIndex& index, const Compar
     const auto signed_adjusted = holm_adjust(signed_raw);
     Table t;
     t.id = "across_problems";
-    t.title = "Across problems: Friedman average ranks and Wilcoxon signed-rank against " + options.reference;
+    t.title = "Across problems: Friedman average ranks and Wilcoxon signed-rank against " +
+              index.label(options.reference);
     t.header = {"Algorithm",     "Average rank",         "Post-hoc p (Holm)", "Signed-rank V",
                 "Signed-rank p", "Signed-rank p (Holm)", "Signed-rank test"};
     double best_rank = INFINITY;
@@ -258,11 +358,11 @@ std::optional<Table> across_problems_table(const StudyIndex& index, const Compar
         TableCell rank = number_cell(friedman.average_ranks[j], 4);
         rank.bold = friedman.average_ranks[j] == best_rank;
         if (j == control) {
-            t.add_row({text_cell(algorithms[j] + " (reference)"), rank, empty_cell(), empty_cell(),
-                       empty_cell(), empty_cell(), empty_cell()});
+            t.add_row({text_cell(index.label(algorithms[j]) + " (reference)"), rank, empty_cell(),
+                       empty_cell(), empty_cell(), empty_cell(), empty_cell()});
             continue;
         }
-        t.add_row({text_cell(algorithms[j]), rank, number_cell(posthoc_adjusted[i], 3),
+        t.add_row({text_cell(index.label(algorithms[j])), rank, number_cell(posthoc_adjusted[i], 3),
                    number_cell(signed_tests[j].statistic, 6), number_cell(signed_tests[j].p_value, 3),
                    number_cell(signed_adjusted[i], 3), text_cell(signed_tests[j].name)});
         ++i;
@@ -307,8 +407,12 @@ std::string resolve_reference(const StudyIndex& index, const std::optional<std::
         throw std::invalid_argument("the study has no runs");
     std::string known;
     for (const auto& a : algorithms)
-        known += (known.empty() ? "" : ", ") + a;
+        known += (known.empty() ? "" : ", ") + a + (index.label(a) == a ? "" : " (" + index.label(a) + ")");
     if (!requested) {
+        // The paper's ITLBO (all defaults) if the study has it, else its first ITLBO variant.
+        for (const auto& a : algorithms)
+            if (a == "itlbo")
+                return a;
         for (const auto& a : algorithms)
             if (split_spec_text(a).name == "itlbo")
                 return a;
@@ -319,8 +423,12 @@ std::string resolve_reference(const StudyIndex& index, const std::optional<std::
             return a;
     std::vector<std::string> matches;
     for (const auto& a : algorithms)
-        if (split_spec_text(a).name == *requested)
+        if (index.label(a) == *requested)
             matches.push_back(a);
+    if (matches.empty())
+        for (const auto& a : algorithms)
+            if (split_spec_text(a).name == *requested)
+                matches.push_back(a);
     if (matches.size() == 1)
         return matches.front();
     throw std::invalid_argument("--reference '" + *requested + "' " +
@@ -335,12 +443,21 @@ std::string comparison_marker(double adjusted_p, double a12, double alpha) {
     return a12 < 0.5 ? "+" : "-";
 }
 
+std::string signed_rank_marker(double adjusted_p, const TestResult& signed_rank, std::size_t nonzero_pairs,
+                               double alpha) {
+    const double n = static_cast<double>(nonzero_pairs);
+    const double centred = signed_rank.statistic - n * (n + 1.0) / 4.0;
+    if (adjusted_p >= alpha || centred == 0.0)
+        return "=";
+    return centred < 0.0 ? "+" : "-";
+}
+
 std::vector<Table> comparison_tables(const StudyIndex& index, const ComparisonOptions& options) {
     std::vector<Table> tables;
     tables.push_back(summary_table(index, options));
     const auto comparisons = compare_with_reference(index, options);
     if (!comparisons.empty())
-        tables.push_back(tests_table(comparisons, options));
+        tables.push_back(tests_table(index, comparisons, options));
     tables.push_back(generic_table(index, comparisons, options));
     if (auto across = across_problems_table(index, options))
         tables.push_back(std::move(*across));

@@ -3,9 +3,11 @@
 //    known optimum, success rate and ERT (COCO) to the study's target, median values at fixed
 //    fractions of the evaluation budget;
 //  - "tests": per problem each algorithm against the reference: Wilcoxon rank-sum p, Holm-adjusted
-//    across that problem's comparisons, Vargha-Delaney A12 and the +/=/- marker;
-//  - "comparison": the generic layout, problems as rows and algorithms as columns, mean (std) and
-//    marker, best mean in bold;
+//    across that problem's comparisons, Vargha-Delaney A12; where the problem's runs are paired by
+//    seed (StudyIndex::paired), also the Wilcoxon signed-rank test of the paired differences (Holm
+//    likewise); the +/=/- marker from the signed-rank test when paired, the rank-sum test otherwise;
+//  - "comparison": the generic layout, problems as rows and algorithms (labels) as columns, mean
+//    (std) and marker, best mean in bold, and which test made each problem's markers;
 //  - "across_problems" (two or more problems): Friedman average ranks with the Holm post-hoc against
 //    the reference, and Wilcoxon signed-rank on per-problem medians (paired by problem).
 #pragma once
@@ -15,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "results/hypothesis_tests.hpp"
 #include "results/study_index.hpp"
 #include "results/table.hpp"
 
@@ -26,14 +29,20 @@ struct ComparisonOptions {
     std::vector<double> budget_fractions = {0.01, 0.1, 1.0};
 };
 
-// The algorithm spec `requested` names: a full spec of the study, or a name (before ':') that
-// exactly one of its algorithms has. Without a request: the first ITLBO, else the first algorithm.
+// The algorithm spec `requested` names: a spec of the study, a label, or a name (before ':') that
+// exactly one of its algorithms has. Without a request: `itlbo` (all defaults) if the study has it,
+// else the first ITLBO variant, else the first algorithm.
 // Throws std::invalid_argument listing the study's algorithms when it names none or several.
 std::string resolve_reference(const StudyIndex& index, const std::optional<std::string>& requested);
 
 // "+" when `algorithm` is significantly better (lower) than the reference at `alpha` after
 // adjustment, "-" when significantly worse, "=" otherwise. a12 is A12(algorithm, reference).
 std::string comparison_marker(double adjusted_p, double a12, double alpha);
+// The same from the signed-rank test of the paired differences algorithm - reference: "+" when
+// significant and V lies below its null mean n (n + 1) / 4 (n = non-zero differences), i.e. the
+// algorithm's values tend lower; "-" above; "=" otherwise.
+std::string signed_rank_marker(double adjusted_p, const TestResult& signed_rank, std::size_t nonzero_pairs,
+                               double alpha);
 
 // The blocks of the across-problem tests: the problems on which every algorithm has runs and, per
 // problem, each algorithm's median final value (columns in study order). Empty with fewer than

@@ -40,10 +40,11 @@ std::optional<std::string> critical_difference_data(const StudyIndex& index, dou
     if (!cd)
         return std::nullopt;
     const FriedmanResult friedman = friedman_test(blocks->second);
-    std::string out = "algorithm,average_rank,cd,alpha,problems\n";
+    std::string out = "algorithm,label,average_rank,cd,alpha,problems\n";
     for (std::size_t j = 0; j < index.algorithms().size(); ++j)
-        out += csv_field(index.algorithms()[j]) + ',' + csv_number(friedman.average_ranks[j]) + ',' +
-               csv_number(*cd) + ',' + csv_number(alpha) + ',' + std::to_string(blocks->first.size()) + '\n';
+        out += csv_field(index.algorithms()[j]) + ',' + csv_field(index.label(index.algorithms()[j])) + ',' +
+               csv_number(friedman.average_ranks[j]) + ',' + csv_number(*cd) + ',' + csv_number(alpha) + ',' +
+               std::to_string(blocks->first.size()) + '\n';
     return out;
 }
 

@@ -15,7 +15,7 @@ namespace mhb {
 // Empty when alpha is not 0.05 or 0.10 or k is outside 2..10.
 std::optional<double> nemenyi_critical_difference(std::size_t algorithms, std::size_t problems, double alpha);
 
-// The data of a critical-difference diagram as CSV (algorithm,average_rank,cd,alpha,problems), or
+// The data of a critical-difference diagram as CSV (algorithm,label,average_rank,cd,alpha,problems), or
 // empty when the study has fewer than two complete problems or no tabulated q_alpha applies.
 std::optional<std::string> critical_difference_data(const StudyIndex& index, double alpha);
 

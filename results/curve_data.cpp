@@ -39,8 +39,9 @@ void sample_union(const std::vector<Steps>& runs,
     }
 }
 
-std::string prefix(const RunGroup& g) {
-    return csv_field(g.problem) + ',' + csv_field(g.algorithm) + ',';
+std::string prefix(const StudyIndex& index, const RunGroup& g) {
+    return csv_field(g.problem) + ',' + csv_field(g.algorithm) + ',' + csv_field(index.label(g.algorithm)) +
+           ',';
 }
 
 std::string summary_columns(const std::vector<double>& values) {
@@ -52,7 +53,7 @@ std::string summary_columns(const std::vector<double>& values) {
 } // namespace
 
 std::string fitness_curves_by_iteration(const StudyIndex& index) {
-    std::string out = "problem,algorithm,iteration,runs,evaluations_mean,mean,std,median,q25,q75\n";
+    std::string out = "problem,algorithm,label,iteration,runs,evaluations_mean,mean,std,median,q25,q75\n";
     for (const auto& g : index.groups()) {
         std::vector<Steps> fitness;
         std::vector<Steps> evaluations;
@@ -72,7 +73,7 @@ std::string fitness_curves_by_iteration(const StudyIndex& index) {
         });
         std::size_t row = 0;
         sample_union(fitness, [&](std::int64_t iteration, const std::vector<double>& v) {
-            out += prefix(g) + std::to_string(iteration) + ',' + std::to_string(v.size()) + ',' +
+            out += prefix(index, g) + std::to_string(iteration) + ',' + std::to_string(v.size()) + ',' +
                    evaluation_means[row++] + ',' + summary_columns(v) + '\n';
         });
     }
@@ -80,7 +81,7 @@ std::string fitness_curves_by_iteration(const StudyIndex& index) {
 }
 
 std::string fitness_curves_by_evaluations(const StudyIndex& index) {
-    std::string out = "problem,algorithm,evaluations,runs,mean,std,median,q25,q75\n";
+    std::string out = "problem,algorithm,label,evaluations,runs,mean,std,median,q25,q75\n";
     for (const auto& g : index.groups()) {
         std::vector<Steps> runs;
         for (const auto* r : g.runs) {
@@ -90,7 +91,7 @@ std::string fitness_curves_by_evaluations(const StudyIndex& index) {
             runs.push_back(std::move(s));
         }
         sample_union(runs, [&](std::int64_t evaluations, const std::vector<double>& v) {
-            out += prefix(g) + std::to_string(evaluations) + ',' + std::to_string(v.size()) + ',' +
+            out += prefix(index, g) + std::to_string(evaluations) + ',' + std::to_string(v.size()) + ',' +
                    summary_columns(v) + '\n';
         });
     }
@@ -98,7 +99,7 @@ std::string fitness_curves_by_evaluations(const StudyIndex& index) {
 }
 
 std::string parameter_curves_by_iteration(const StudyIndex& index) {
-    std::string out = "problem,algorithm,parameter,iteration,runs,mean,std,true,opt\n";
+    std::string out = "problem,algorithm,label,parameter,iteration,runs,mean,std,true,opt\n";
     for (const auto& g : index.groups()) {
         if (g.runs.empty() || g.runs.front()->parameter_names.empty())
             continue;
@@ -116,9 +117,10 @@ std::string parameter_curves_by_iteration(const StudyIndex& index) {
                 k < first.true_parameters.size() ? csv_number(first.true_parameters[k]) : "";
             const std::string optimum = k < first.x_opt.size() ? csv_number(first.x_opt[k]) : "";
             sample_union(runs, [&](std::int64_t iteration, const std::vector<double>& v) {
-                out += prefix(g) + csv_field(first.parameter_names[k]) + ',' + std::to_string(iteration) +
-                       ',' + std::to_string(v.size()) + ',' + csv_number(mean(v)) + ',' +
-                       csv_number(standard_deviation(v)) + ',' + truth + ',' + optimum + '\n';
+                out += prefix(index, g) + csv_field(first.parameter_names[k]) + ',' +
+                       std::to_string(iteration) + ',' + std::to_string(v.size()) + ',' +
+                       csv_number(mean(v)) + ',' + csv_number(standard_deviation(v)) + ',' + truth + ',' +
+                       optimum + '\n';
             });
         }
     }
@@ -126,10 +128,10 @@ std::string parameter_curves_by_iteration(const StudyIndex& index) {
 }
 
 std::string final_values(const StudyIndex& index) {
-    std::string out = "problem,algorithm,run,best_f,evaluations,evals_to_target\n";
+    std::string out = "problem,algorithm,label,run,best_f,evaluations,evals_to_target\n";
     for (const auto& g : index.groups())
         for (const auto* r : g.runs)
-            out += prefix(g) + std::to_string(r->run_index) + ',' + csv_number(r->best_f) + ',' +
+            out += prefix(index, g) + std::to_string(r->run_index) + ',' + csv_number(r->best_f) + ',' +
                    std::to_string(r->evaluations) + ',' +
                    (r->evaluations_to_target ? std::to_string(*r->evaluations_to_target) : "") + '\n';
     return out;
@@ -141,7 +143,7 @@ const std::vector<double>& ecdf_target_gaps() {
 }
 
 std::string target_hits(const StudyIndex& index) {
-    std::string out = "problem,algorithm,run,target_gap,evaluations\n";
+    std::string out = "problem,algorithm,label,run,target_gap,evaluations\n";
     for (const auto& g : index.groups())
         for (const auto* r : g.runs) {
             if (!r->f_opt)
@@ -160,7 +162,8 @@ std::string target_hits(const StudyIndex& index) {
                         hit = std::to_string(evaluations);
                         break;
                     }
-                out += prefix(g) + std::to_string(r->run_index) + ',' + csv_number(gap) + ',' + hit + '\n';
+                out += prefix(index, g) + std::to_string(r->run_index) + ',' + csv_number(gap) + ',' + hit +
+                       '\n';
             }
         }
     return out;

@@ -104,8 +104,9 @@ std::size_t write_ioh_export(const StudyIndex& index, const fs::path& dir) {
             const std::string json =
                 "{\n\t\"version\": \"0.3.3\",\n\t\"suite\": \"mhbench\",\n\t\"function_id\": " + id +
                 ",\n\t\"function_name\": " + json_string(name) +
-                ",\n\t\"maximization\": false,\n\t\"algorithm\": {\"name\": " + json_string(algorithm) +
-                ", \"info\": " + json_string("mhbench run of " + algorithm + " on " + problem) +
+                ",\n\t\"maximization\": false,\n\t\"algorithm\": {\"name\": " +
+                json_string(index.label(algorithm)) + ", \"info\": " +
+                json_string("mhbench run of " + index.full_spec(algorithm) + " on " + problem) +
                 "},\n\t\"attributes\": [\"evaluations\", \"raw_y\"],\n\t\"scenarios\": [\n" + scenarios +
                 "\n\t]\n}\n";
             write_file_atomically(folder / ("IOHprofiler_f" + id + "_" + name + ".json"), json);

@@ -7,6 +7,7 @@
 // repeats runs on one problem instance). The .dat rows are the improvements of best-so-far f as
 // mhbench recorded them (end of each iteration and the evaluation checkpoints), so an improvement's
 // evaluation count is where it was recorded, which can be later than where it happened.
+// An algorithm is named by its display label, with its full spec in "info".
 #pragma once
 
 #include <filesystem>

@@ -45,15 +45,13 @@ std::vector<PmsmProblem> pmsm_problems(const StudyIndex& index) {
     return out;
 }
 
-std::string base_name(const std::string& algorithm) {
-    return split_spec_text(algorithm).name;
-}
-
-// The paper's entry for this algorithm (matched by name, whatever its parameters), if any.
+// The paper's entry for this algorithm, if any: only for the configurations the paper ran, i.e. the
+// canonical spec exactly "itlbo", "tlbo" or "pso" (every parameter at its default, which are the
+// paper's settings). A variant (itlbo:obl=off, pso:w=0.7, a grid point) gets none, whatever its name.
 template <typename Entry>
 const Entry* published_entry(const std::vector<Entry>& entries, const std::string& algorithm) {
     for (const auto& e : entries)
-        if (e.algorithm == base_name(algorithm))
+        if (e.algorithm == algorithm)
             return &e;
     return nullptr;
 }
@@ -73,6 +71,11 @@ int paper_parameter(const std::string& name) {
             return static_cast<int>(k);
     return -1;
 }
+
+// Where the paper's numbers appear, and what they were measured with.
+const char* const paper_rows_note =
+    "; shown only beside itlbo, tlbo and pso with every parameter at its default (the paper's settings), "
+    "never beside a variant; the paper ran NP = 50 for 150 iterations, 20 runs";
 
 TableCell empty_cell() {
     return text_cell("");
@@ -120,7 +123,8 @@ Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
             }
         }
         std::vector<TableCell> row = {
-            text_cell(a), text_cell(std::to_string(g.runs.size()) + "/" + std::to_string(total_runs(g))),
+            text_cell(index.label(a)),
+            text_cell(std::to_string(g.runs.size()) + "/" + std::to_string(total_runs(g))),
             number_cell(mean(evaluations), 6), number_cell(s.mean), number_cell(s.std)};
         row[3].bold = s.mean == best_mean;
         if (const auto* f = published_fitness(p, a)) {
@@ -138,7 +142,7 @@ Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
                 " (mean, sample std); lowest mean in bold. f* is the exact least-squares optimum of the "
                 "problem; the gap f - f* is what an optimiser could still gain. Paper values: " +
                 std::string(paper_citation) + (p.published ? ", " + std::string(p.published->table) : "") +
-                ".";
+                paper_rows_note + ".";
     return t;
 }
 
@@ -194,10 +198,11 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
                 stds[k] = standard_deviation(v);
             }
         }
-        values_row(a, "identified (mean)", means, 5, empty_cell());
-        values_row(a, "std over runs", stds, 3, empty_cell());
+        const std::string who = index.label(a);
+        values_row(who, "identified (mean)", means, 5, empty_cell());
+        values_row(who, "std over runs", stds, 3, empty_cell());
         if (!truth.empty())
-            values_row(a, "error % vs true", relative_pct(means, truth), 3, empty_cell());
+            values_row(who, "error % vs true", relative_pct(means, truth), 3, empty_cell());
         if (!theta.empty()) {
             std::vector<double> distances;
             for (const auto* r : g.runs) {
@@ -206,7 +211,7 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
                     sum += std::pow((r->best_x[k] - theta[k]) / theta[k], 2);
                 distances.push_back(100.0 * std::sqrt(sum / static_cast<double>(d)));
             }
-            values_row(a, "deviation % from theta*", relative_pct(means, theta), 3,
+            values_row(who, "deviation % from theta*", relative_pct(means, theta), 3,
                        number_cell(mean(distances), 3));
         }
         if (const auto* published = published_identification(p, a)) {
@@ -217,8 +222,8 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
                     identified[k] = published->identified[static_cast<std::size_t>(j)];
                     errors[k] = published->error_pct[static_cast<std::size_t>(j)];
                 }
-            values_row(a, "paper identified", identified, 5, empty_cell());
-            values_row(a, "paper |error| %", errors, 3, empty_cell());
+            values_row(who, "paper identified", identified, 5, empty_cell());
+            values_row(who, "paper |error| %", errors, 3, empty_cell());
         }
     }
     t.caption =
@@ -228,7 +233,7 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
         "theta*) / theta*, and Overall is the mean over runs of the RMS relative distance to theta* in %. "
         "Paper values: " +
         std::string(paper_citation) + (p.published ? ", " + std::string(p.published->table) : "") +
-        " (its errors are magnitudes).";
+        " (its errors are magnitudes)" + paper_rows_note + ".";
     return t;
 }
 
@@ -251,7 +256,7 @@ Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& 
         for (const auto& a : index.algorithms_on(p.spec)) {
             const RunGroup& g = *index.find(p.spec, a);
             const RunRecord& first = *g.runs.front();
-            std::vector<TableCell> row = {text_cell(condition), text_cell(a),
+            std::vector<TableCell> row = {text_cell(condition), text_cell(index.label(a)),
                                           text_cell("this study, mean of " + std::to_string(g.runs.size()))};
             for (std::size_t j = 0; j < pmsm_parameter_names.size(); ++j) {
                 std::vector<double> v;
@@ -272,7 +277,8 @@ Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& 
             }
             t.add_row(std::move(row));
             if (const auto* published = published_identification(p, a)) {
-                std::vector<TableCell> paper_row = {text_cell(condition), text_cell(a), text_cell("paper")};
+                std::vector<TableCell> paper_row = {text_cell(condition), text_cell(index.label(a)),
+                                                    text_cell("paper")};
                 for (std::size_t j = 0; j < pmsm_parameter_names.size(); ++j)
                     paper_row.push_back(
                         text_cell(value_and_error(published->identified[j], published->error_pct[j])));
@@ -283,7 +289,7 @@ Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& 
     t.caption =
         "Identified value / |error| against the true value, this study (mean over runs) beside the paper's "
         "Table 4 (" +
-        std::string(paper_citation) + ").";
+        std::string(paper_citation) + ")" + paper_rows_note + ".";
     return t;
 }
 

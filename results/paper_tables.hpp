@@ -8,6 +8,9 @@
 //  - Table 4 "Identification results under different working conditions": the three conditions
 //    of the paper side by side, this study against the paper.
 // For PMSM conditions the paper did not run, the same layouts are produced without paper columns.
+// The paper's values appear only beside the configurations it ran: the specs exactly `itlbo`,
+// `tlbo` and `pso` (canonical, so every parameter at its default = the paper's settings), never
+// beside a variant. Algorithms are named by their labels.
 #pragma once
 
 #include <vector>

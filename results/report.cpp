@@ -7,6 +7,7 @@
 #include "results/critical_difference.hpp"
 #include "results/csv.hpp"
 #include "results/curve_data.hpp"
+#include "results/factorial_effects.hpp"
 #include "results/ioh_export.hpp"
 #include "results/paper_tables.hpp"
 #include "results/study_index.hpp"
@@ -78,67 +79,195 @@ std::optional<std::string> find_matplotlib_python(const std::vector<std::string>
     return std::nullopt;
 }
 
-void build_report(const StudyData& study, const ReportOptions& options, std::ostream& console) {
-    check_options(options);
-    const StudyIndex index(study);
-    ComparisonOptions comparison;
-    comparison.reference = resolve_reference(index, options.reference);
-    comparison.alpha = options.alpha;
+namespace {
 
-    const fs::path out_dir = options.out_dir.empty() ? study.directory / "report" : options.out_dir;
-    std::error_code ec;
-    fs::create_directories(out_dir, ec);
-    if (ec || !fs::is_directory(out_dir))
-        throw std::runtime_error(out_dir.string() + ": cannot create the report directory");
-
-    std::vector<Table> tables = pmsm_paper_tables(index);
+// The tables of one budget, titled and captioned with it when it is known.
+std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOptions& comparison,
+                                 const std::vector<DesignEffects>& designs,
+                                 const std::vector<DesignCandidate>& rejected, bool list_algorithms) {
+    std::vector<Table> tables;
+    if (list_algorithms) {
+        Table t;
+        t.id = "algorithms";
+        t.title = "Algorithms";
+        t.header = {"Label", "Spec", "Full spec"};
+        for (const auto& a : index.algorithms())
+            t.add_row({text_cell(index.label(a)), text_cell(a), text_cell(index.full_spec(a))});
+        t.caption =
+            "The label names the algorithm in every table and figure; the spec is canonical (defaults "
+            "dropped), the full spec lists every parameter with its value, defaults included.";
+        tables.push_back(std::move(t));
+    }
+    for (auto& t : pmsm_paper_tables(index))
+        tables.push_back(std::move(t));
     for (auto& t : comparison_tables(index, comparison))
         tables.push_back(std::move(t));
+    if (auto effects = effects_table(designs, rejected, comparison.alpha))
+        tables.push_back(std::move(*effects));
+    if (!index.budget().empty())
+        for (auto& t : tables) {
+            t.title += " [budget " + index.budget() + "]";
+            t.caption += " Budget: " + index.budget() + ".";
+        }
+    return tables;
+}
+
+// The reference of one budget: the requested one if that budget ran it, else the default there.
+std::string budget_reference(const StudyIndex& index, const ReportOptions& options, std::ostream& console) {
+    if (options.reference) {
+        try {
+            return resolve_reference(index, options.reference);
+        } catch (const std::invalid_argument&) {
+            const std::string fallback = resolve_reference(index, std::nullopt);
+            console << "budget " << index.budget() << ": --reference " << *options.reference
+                    << " did not run at this budget; reference " << fallback << " instead\n";
+            return fallback;
+        }
+    }
+    return resolve_reference(index, std::nullopt);
+}
+
+void write_tables(const std::vector<Table>& tables, const fs::path& dir, const ReportOptions& options,
+                  std::ostream& console, std::string& all_markdown) {
+    for (const auto& t : tables) {
+        const std::string markdown = render_markdown(t);
+        console << markdown << '\n';
+        all_markdown += markdown + '\n';
+        if (options.formats.count("md"))
+            write_file_atomically(dir / (t.id + ".md"), markdown);
+        if (options.formats.count("tex"))
+            write_file_atomically(dir / (t.id + ".tex"), render_latex(t));
+        if (options.formats.count("csv"))
+            write_file_atomically(dir / (t.id + ".csv"), render_csv(t));
+    }
+}
+
+void make_report_directory(const fs::path& dir) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir))
+        throw std::runtime_error(dir.string() + ": cannot create the report directory");
+}
+
+// Everything of one budget in `dir`: tables, curve data, effects, IOH export, figures. Returns the
+// tables (for the combined report.md and report.tex).
+std::vector<Table> write_budget_report(const StudyData& study, const std::string& budget, const fs::path& dir,
+                                       const std::string& heading, const ReportOptions& options,
+                                       std::ostream& console, std::string& all_markdown) {
+    make_report_directory(dir);
+    const StudyIndex index(study, budget);
+    ComparisonOptions comparison;
+    comparison.reference = budget_reference(index, options, console);
+    comparison.alpha = options.alpha;
+
+    std::vector<DesignEffects> designs;
+    std::vector<DesignCandidate> rejected;
+    for (auto& candidate : find_factorial_designs(index)) {
+        if (!candidate.design) {
+            rejected.push_back(std::move(candidate));
+            continue;
+        }
+        DesignEffects effects{*candidate.design, factorial_effects(index, *candidate.design, options.alpha)};
+        if (!effects.analyses.empty())
+            designs.push_back(std::move(effects));
+    }
 
     const auto count = [](std::size_t n, const char* noun) {
         return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
     };
-    console << "mhbench report of " << study.directory.string() << ": " << count(study.runs.size(), "run")
-            << " (" << index.failed_runs() << " failed), " << count(index.problems().size(), "problem")
-            << ", " << count(index.algorithms().size(), "algorithm") << "; reference " << comparison.reference
-            << "\n\n";
+    std::size_t runs = 0;
+    for (const auto& r : study.runs)
+        runs += r.budget == budget ? 1U : 0U;
+    console << heading << count(runs, "run") << " (" << index.failed_runs() << " failed), "
+            << count(index.problems().size(), "problem") << ", "
+            << count(index.algorithms().size(), "algorithm") << "; reference "
+            << index.label(comparison.reference) << '\n';
+    for (const auto& d : designs)
+        console << "factorial design " << d.design.description() << ": effects in effects.csv\n";
+    for (const auto& r : rejected)
+        console << "no factorial analysis of " << r.name << ": " << r.why_not << '\n';
+    console << '\n';
+
+    const std::vector<Table> tables =
+        budget_tables(index, comparison, designs, rejected, !study.algorithms.empty());
+    write_tables(tables, dir, options, console, all_markdown);
+
+    std::error_code ec;
+    const auto write_or_remove = [&](const fs::path& path, const std::optional<std::string>& content) {
+        if (content)
+            write_file_atomically(path, *content);
+        else
+            fs::remove(path, ec); // a stale one from an earlier report would mislead
+    };
+    write_or_remove(dir / "budget.txt",
+                    budget.empty() ? std::nullopt : std::optional<std::string>(budget + "\n"));
+    write_file_atomically(dir / "curves_iteration.csv", fitness_curves_by_iteration(index));
+    write_file_atomically(dir / "curves_evaluations.csv", fitness_curves_by_evaluations(index));
+    write_file_atomically(dir / "parameters_iteration.csv", parameter_curves_by_iteration(index));
+    write_file_atomically(dir / "final_values.csv", final_values(index));
+    write_file_atomically(dir / "target_hits.csv", target_hits(index));
+    write_or_remove(dir / "critical_difference.csv", critical_difference_data(index, options.alpha));
+    write_or_remove(dir / "effect_means.csv",
+                    designs.empty() ? std::nullopt : std::optional<std::string>(effect_means_csv(designs)));
+    if (designs.empty()) // no effects table: stale copies from an earlier report would mislead
+        for (const char* ext : {".md", ".tex", ".csv"})
+            fs::remove(dir / (std::string("effects") + ext), ec);
+    const std::size_t ioh_files = write_ioh_export(index, dir / "ioh");
+    console << "tables and curve data: " << dir.string() << "\nIOHprofiler export (" << ioh_files
+            << " files, load the folder in IOHanalyzer): " << (dir / "ioh").string() << '\n';
+    if (options.figures)
+        draw_figures(options, dir, console);
+    return tables;
+}
+
+} // namespace
+
+void build_report(const StudyData& study, const ReportOptions& options, std::ostream& console) {
+    check_options(options);
+    const fs::path out_dir = options.out_dir.empty() ? study.directory / "report" : options.out_dir;
+    make_report_directory(out_dir);
+    std::vector<std::string> budgets = study_budgets(study);
+    if (budgets.empty())
+        throw std::invalid_argument("the study has no runs");
+    if (options.reference) { // an error for a reference no budget ran, as before budgets existed
+        StudyData all = study;
+        for (auto& r : all.runs)
+            r.budget.clear();
+        (void)resolve_reference(StudyIndex(all), options.reference);
+    }
+
+    const std::string heading = "mhbench report of " + study.directory.string() + ": ";
+    if (budgets.size() > 1)
+        console << heading << budgets.size() << " budgets, each reported in its own folder\n";
     // The context (version, commit, compiler, threads, date) heads the combined report, so a table
     // read later says what produced it.
     std::string all_markdown = "# mhbench report: " + study.directory.string() +
                                "\n\nStudy context (context.ini):\n\n```\n" + study.context_text +
                                (study.context_text.empty() || study.context_text.back() == '\n' ? "" : "\n") +
                                "```\n\n";
-    for (const auto& t : tables) {
-        const std::string markdown = render_markdown(t);
-        console << markdown << '\n';
-        all_markdown += markdown + '\n';
-        if (options.formats.count("md"))
-            write_file_atomically(out_dir / (t.id + ".md"), markdown);
-        if (options.formats.count("tex"))
-            write_file_atomically(out_dir / (t.id + ".tex"), render_latex(t));
-        if (options.formats.count("csv"))
-            write_file_atomically(out_dir / (t.id + ".csv"), render_csv(t));
+    std::vector<Table> tables;
+    if (budgets.size() == 1) {
+        tables =
+            write_budget_report(study, budgets.front(), out_dir, heading, options, console, all_markdown);
+    } else {
+        // Several budgets: one complete report per budget in <out>/<budget slug>/, the combined
+        // report.md / report.tex and budgets.csv (budget,directory) on top.
+        std::string index_csv = "budget,directory\n";
+        for (const auto& budget : budgets) {
+            const std::string slug = budget_slug(budget);
+            index_csv += csv_field(budget) + ',' + csv_field(slug) + '\n';
+            all_markdown += "## Budget " + (budget.empty() ? std::string("unspecified") : budget) + " (" +
+                            slug + "/)\n\n";
+            for (auto& t : write_budget_report(study, budget, out_dir / slug, "budget " + budget + ": ",
+                                               options, console, all_markdown))
+                tables.push_back(std::move(t));
+        }
+        write_file_atomically(out_dir / "budgets.csv", index_csv);
     }
     if (options.formats.count("md"))
         write_file_atomically(out_dir / "report.md", all_markdown);
     if (options.formats.count("tex"))
         write_file_atomically(out_dir / "report.tex", latex_document(tables));
-
-    write_file_atomically(out_dir / "curves_iteration.csv", fitness_curves_by_iteration(index));
-    write_file_atomically(out_dir / "curves_evaluations.csv", fitness_curves_by_evaluations(index));
-    write_file_atomically(out_dir / "parameters_iteration.csv", parameter_curves_by_iteration(index));
-    write_file_atomically(out_dir / "final_values.csv", final_values(index));
-    write_file_atomically(out_dir / "target_hits.csv", target_hits(index));
-    const fs::path cd_path = out_dir / "critical_difference.csv";
-    if (const auto cd = critical_difference_data(index, options.alpha))
-        write_file_atomically(cd_path, *cd);
-    else
-        fs::remove(cd_path, ec); // a stale one from an earlier report would mislead
-    const std::size_t ioh_files = write_ioh_export(index, out_dir / "ioh");
-    console << "tables and curve data: " << out_dir.string() << "\nIOHprofiler export (" << ioh_files
-            << " files, load the folder in IOHanalyzer): " << (out_dir / "ioh").string() << '\n';
-    if (options.figures)
-        draw_figures(options, out_dir, console);
 }
 
 } // namespace mhb

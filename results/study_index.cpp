@@ -1,7 +1,10 @@
 #include "results/study_index.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
+#include <set>
+#include <stdexcept>
 
 namespace mhb {
 
@@ -35,6 +38,28 @@ std::optional<double> spec_number(const SpecText& spec, const std::string& key) 
     return value;
 }
 
+std::vector<std::string> study_budgets(const StudyData& data) {
+    std::vector<std::string> budgets;
+    for (const auto& r : data.runs)
+        if (std::find(budgets.begin(), budgets.end(), r.budget) == budgets.end())
+            budgets.push_back(r.budget);
+    return budgets;
+}
+
+std::string budget_slug(const std::string& budget) {
+    if (budget.empty())
+        return "budget_unspecified";
+    std::string out;
+    for (char c : budget) {
+        const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.';
+        if (keep)
+            out += c;
+        else if (out.empty() || out.back() != '_')
+            out += '_';
+    }
+    return out;
+}
+
 std::vector<double> RunGroup::final_values() const {
     std::vector<double> values;
     values.reserve(runs.size());
@@ -43,25 +68,64 @@ std::vector<double> RunGroup::final_values() const {
     return values;
 }
 
-StudyIndex::StudyIndex(const StudyData& data) {
+const RunRecord* RunGroup::run_with_index(std::int64_t run_index) const {
+    const auto it = std::lower_bound(runs.begin(), runs.end(), run_index,
+                                     [](const RunRecord* r, std::int64_t i) { return r->run_index < i; });
+    return it != runs.end() && (*it)->run_index == run_index ? *it : nullptr;
+}
+
+PairedValues paired_final_values(const RunGroup& x, const RunGroup& y) {
+    PairedValues out;
+    for (const auto* r : x.runs)
+        if (const RunRecord* partner = y.run_with_index(r->run_index)) {
+            out.x.push_back(r->best_f);
+            out.y.push_back(partner->best_f);
+        }
+    return out;
+}
+
+StudyIndex::StudyIndex(const StudyData& data, const std::optional<std::string>& budget) {
+    if (budget) {
+        budget_ = *budget;
+    } else {
+        const auto budgets = study_budgets(data);
+        if (budgets.size() > 1)
+            throw std::logic_error("StudyIndex: the study holds " + std::to_string(budgets.size()) +
+                                   " budgets; index one budget at a time");
+        if (!budgets.empty())
+            budget_ = budgets.front();
+    }
+    std::vector<const RunRecord*> selected;
+    for (const auto& r : data.runs)
+        if (r.budget == budget_)
+            selected.push_back(&r);
+
     const auto remember = [](std::vector<std::string>& list, const std::string& name) {
         if (std::find(list.begin(), list.end(), name) == list.end())
             list.push_back(name);
     };
-    for (const auto& r : data.runs) {
-        remember(problems_, r.problem);
-        remember(algorithms_, r.algorithm);
+    for (const auto* r : selected) {
+        remember(problems_, r->problem);
+        remember(algorithms_, r->algorithm);
+    }
+    for (const auto& info : data.algorithms) {
+        labels_[info.spec] = info.label.empty() ? info.spec : info.label;
+        full_specs_[info.spec] = info.full_spec.empty() ? info.spec : info.full_spec;
+    }
+    for (const auto& a : algorithms_) {
+        labels_.emplace(a, a); // no-op where algorithms.csv named it
+        full_specs_.emplace(a, a);
     }
     for (const auto& p : problems_)
         for (const auto& a : algorithms_) {
             RunGroup group;
             group.problem = p;
             group.algorithm = a;
-            for (const auto& r : data.runs) {
-                if (r.problem != p || r.algorithm != a)
+            for (const auto* r : selected) {
+                if (r->problem != p || r->algorithm != a)
                     continue;
-                if (r.ok)
-                    group.runs.push_back(&r);
+                if (r->ok)
+                    group.runs.push_back(r);
                 else
                     ++group.failed;
             }
@@ -72,6 +136,19 @@ StudyIndex::StudyIndex(const StudyData& data) {
             if (!group.runs.empty() || group.failed > 0)
                 groups_.push_back(std::move(group));
         }
+    for (const auto& p : problems_) {
+        std::map<std::int64_t, std::uint64_t> seed_of_index;
+        std::set<std::string> algorithms;
+        bool same = true;
+        for (const auto* r : selected) {
+            if (r->problem != p)
+                continue;
+            algorithms.insert(r->algorithm);
+            const auto [it, inserted] = seed_of_index.emplace(r->run_index, r->seed);
+            same = same && (inserted || it->second == r->seed);
+        }
+        paired_[p] = same && algorithms.size() >= 2;
+    }
 }
 
 const RunGroup* StudyIndex::find(const std::string& problem, const std::string& algorithm) const {
@@ -87,6 +164,21 @@ std::vector<std::string> StudyIndex::algorithms_on(const std::string& problem) c
         if (find(problem, a) != nullptr)
             out.push_back(a);
     return out;
+}
+
+std::string StudyIndex::label(const std::string& algorithm) const {
+    const auto it = labels_.find(algorithm);
+    return it == labels_.end() ? algorithm : it->second;
+}
+
+std::string StudyIndex::full_spec(const std::string& algorithm) const {
+    const auto it = full_specs_.find(algorithm);
+    return it == full_specs_.end() ? algorithm : it->second;
+}
+
+bool StudyIndex::paired(const std::string& problem) const {
+    const auto it = paired_.find(problem);
+    return it != paired_.end() && it->second;
 }
 
 } // namespace mhb

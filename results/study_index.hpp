@@ -1,6 +1,11 @@
-// A finished study's runs grouped by (problem, algorithm), in the order they first appear in
-// runs.csv, with the spec texts split into name and key=value parameters. Everything the report
-// computes starts from here. (results/ reads specs as text: it depends on no other library.)
+// A finished study's runs of one budget grouped by (problem, algorithm), in the order they first
+// appear in runs.csv, with the spec texts split into name and key=value parameters, each
+// algorithm's display label and full spec (algorithms.csv), and whether each problem's runs are
+// paired by seed. Everything the report computes starts from here. (results/ reads specs as text:
+// it depends on no other library.)
+//
+// A study may hold several budgets (RunRecord::budget, a factor of its design): an index covers
+// one of them, since runs at different budgets are different experiments.
 #pragma once
 
 #include <map>
@@ -22,6 +27,13 @@ SpecText split_spec_text(const std::string& spec);
 // The value of a numeric parameter of a spec, if present and numeric.
 std::optional<double> spec_number(const SpecText& spec, const std::string& key);
 
+// The distinct budgets of a study's runs, in the order they first appear (one "" for old studies;
+// none for a study without runs).
+std::vector<std::string> study_budgets(const StudyData& data);
+// A file-name-safe form of a budget: "iterations=150,evaluations=2e4" -> "iterations_150_evaluations_2e4";
+// "" -> "budget_unspecified".
+std::string budget_slug(const std::string& budget);
+
 struct RunGroup {
     std::string problem;
     std::string algorithm;
@@ -29,12 +41,25 @@ struct RunGroup {
     std::size_t failed = 0;
 
     [[nodiscard]] std::vector<double> final_values() const;
+    // The successful run with this run index, or nullptr.
+    [[nodiscard]] const RunRecord* run_with_index(std::int64_t run_index) const;
 };
+
+// The final values of two groups on the run indices where both have a successful run, in run-index
+// order: the pairs of a paired test.
+struct PairedValues {
+    std::vector<double> x;
+    std::vector<double> y;
+};
+PairedValues paired_final_values(const RunGroup& x, const RunGroup& y);
 
 class StudyIndex {
 public:
-    explicit StudyIndex(const StudyData& data);
+    // Indexes the runs of `budget`; without one, all runs, which must then share one budget
+    // (std::logic_error otherwise: build one index per budget).
+    explicit StudyIndex(const StudyData& data, const std::optional<std::string>& budget = std::nullopt);
 
+    [[nodiscard]] const std::string& budget() const { return budget_; }
     [[nodiscard]] const std::vector<std::string>& problems() const { return problems_; }
     [[nodiscard]] const std::vector<std::string>& algorithms() const { return algorithms_; }
     // nullptr when the pair has no successful run.
@@ -44,11 +69,25 @@ public:
     [[nodiscard]] const std::vector<RunGroup>& groups() const { return groups_; }
     [[nodiscard]] std::size_t failed_runs() const { return failed_; }
 
+    // The display label and the full spec (every parameter, defaults included) of an algorithm
+    // spec, from algorithms.csv; the spec itself for studies without that file.
+    [[nodiscard]] std::string label(const std::string& algorithm) const;
+    [[nodiscard]] std::string full_spec(const std::string& algorithm) const;
+
+    // Whether the runs on `problem` are paired by (problem, run index): at least two algorithms ran
+    // on it and, for every run index, every algorithm's run (failed ones included) has the same
+    // seed (common random numbers). With per-algorithm seeds they differ and runs are independent.
+    [[nodiscard]] bool paired(const std::string& problem) const;
+
 private:
+    std::string budget_;
     std::vector<std::string> problems_;
     std::vector<std::string> algorithms_;
     std::vector<RunGroup> groups_;
     std::size_t failed_ = 0;
+    std::map<std::string, std::string> labels_;
+    std::map<std::string, std::string> full_specs_;
+    std::map<std::string, bool> paired_;
 };
 
 } // namespace mhb

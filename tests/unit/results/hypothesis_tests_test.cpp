@@ -108,6 +108,46 @@ TEST(SignedRank, NormalApproximationWithZerosAndTies) {
     EXPECT_EQ(signed_rank_test({1, 2}, {1, 2}).p_value, 1.0);
 }
 
+TEST(SignedRank, ExactBelowFiftyPairsNormalFromFiftyAsRsWilcoxTestPaired) {
+    // R's wilcox.test(x, y, paired = TRUE) (exact = NULL, correct = TRUE) is exact for n < 50
+    // non-zero differences without ties, normal with continuity correction otherwise. SciPy 1.10's
+    // default switches at n <= 50, so the references name the method: d_i = 0.1 (i + 1), negative
+    // for i divisible by 3.
+    //   scipy.stats.wilcoxon(d[:49], method='exact')                  -> p = 0.06248542836759796
+    //   scipy.stats.wilcoxon(d, method='approx', correction=True)     -> p = 0.04070768613514751
+    // (SciPy reports min(V+, V-) = 425 for both; V+ = 800 and 850 by hand.)
+    std::vector<double> d;
+    for (int i = 0; i < 50; ++i)
+        d.push_back(0.1 * (i + 1) * (i % 3 != 0 ? 1.0 : -1.0));
+    const std::vector<double> first49(d.begin(), d.begin() + 49);
+    const TestResult exact = signed_rank_test(first49, std::vector<double>(49, 0.0));
+    EXPECT_TRUE(exact.exact);
+    EXPECT_EQ(exact.statistic, 800.0);
+    EXPECT_NEAR(exact.p_value, 0.06248542836759796, 1e-12);
+    const TestResult normal = signed_rank_test(d, std::vector<double>(50, 0.0));
+    EXPECT_FALSE(normal.exact);
+    EXPECT_EQ(normal.statistic, 850.0);
+    EXPECT_NEAR(normal.p_value, 0.04070768613514751, 1e-12);
+    EXPECT_NE(normal.name.find("normal approx"), std::string::npos);
+}
+
+TEST(SignedRank, PairedDifferencesOfRunsAsScipy) {
+    // The paired runs of report_factors_test.cpp: reference 1 + i, algorithm 1 + i + d_i.
+    // scipy.stats.wilcoxon(x, y, method='exact') -> statistic 1.0 (= V-), p = 0.015625 = 4/256:
+    // V+ = 36 - 1 = 35, and the subsets of {1..8} with sum <= 1 are {} and {1}.
+    const std::vector<double> d = {0.5, 0.25, -0.125, 0.75, 1.0, 0.375, 0.625, 0.875};
+    std::vector<double> x;
+    std::vector<double> y;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        y.push_back(1.0 + static_cast<double>(i));
+        x.push_back(y.back() + d[i]);
+    }
+    const TestResult r = signed_rank_test(x, y);
+    EXPECT_TRUE(r.exact);
+    EXPECT_EQ(r.statistic, 35.0);
+    EXPECT_DOUBLE_EQ(r.p_value, 0.015625);
+}
+
 TEST(Friedman, MatchesRsRoundingTimesExample) {
     // R's ?friedman.test example (Hollander & Wolfe, rounding first base, 22 players x 3 methods):
     // "Friedman chi-squared = 11.143, df = 2, p-value = 0.003805"; scipy.stats.friedmanchisquare

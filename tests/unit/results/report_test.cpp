@@ -22,7 +22,7 @@ namespace mhb {
 namespace {
 namespace fs = std::filesystem;
 
-const std::vector<std::string> algorithms = {"itlbo", "tlbo:np=50", "pso"};
+const std::vector<std::string> algorithms = {"itlbo", "tlbo", "pso"};
 const std::vector<double> truth = {0.330, 0.00324, 0.00324, 0.0776};
 
 // PMSM runs: final f = base + step * i (i = 0..4), so ITLBO's mean is 4.02 and std
@@ -161,7 +161,7 @@ TEST_F(Report, Table3CarriesParametersThetaStarAndPaperValues) {
     EXPECT_NEAR(t.number(find("itlbo", "identified (mean)"), t.column("Rs")), 0.331, 1e-12);
     EXPECT_NEAR(t.number(find("itlbo", "error % vs true"), t.column("Rs")), 100.0 * 0.001 / 0.33, 1e-9);
     EXPECT_NEAR(t.number(find("itlbo", "deviation % from theta*"), t.column("Rs")), 0.0, 1e-9);
-    EXPECT_EQ(t.number(find("tlbo:np=50", "paper identified"), t.column("Ld")), 0.00363); // Table 3
+    EXPECT_EQ(t.number(find("tlbo", "paper identified"), t.column("Ld")), 0.00363); // Table 3
     EXPECT_EQ(t.number(find("pso", "paper |error| %"), t.column("psi")), 2.1);
     const CsvTable t4 = read_csv(study_dir_ / "report" / "table4_conditions.csv");
     EXPECT_EQ(t4.rows.size(), 6u); // three algorithms, this study and the paper
@@ -173,7 +173,11 @@ TEST_F(Report, StatisticsTablesNameTheirTests) {
     ASSERT_EQ(tests.rows.size(), 4u); // two problems x two non-reference algorithms
     // PMSM: ITLBO's five values all lie below TLBO's: U = 25 of 25, exact two-sided p = 2 / C(10, 5)
     // = 2/252 (by hand); Holm over two comparisons, both p = 2/252, gives 4/252 < 0.05; A12 = 1.
-    EXPECT_EQ(tests.rows[0][tests.column("Test")], "Wilcoxon rank-sum (Mann-Whitney U), exact");
+    EXPECT_EQ(tests.rows[0][tests.column("Rank-sum test")], "Wilcoxon rank-sum (Mann-Whitney U), exact");
+    // Each algorithm's runs have their own seed: not paired, so the rank-sum test makes the marker.
+    EXPECT_EQ(tests.rows[0][tests.column("Paired runs")], "no (seeds differ)");
+    EXPECT_EQ(tests.rows[0][tests.column("Signed-rank p")], "");
+    EXPECT_EQ(tests.rows[0][tests.column("Result by")], "rank-sum");
     EXPECT_NEAR(tests.number(0, tests.column("p")), 2.0 / 252.0, 1e-12);
     EXPECT_NEAR(tests.number(0, tests.column("p (Holm)")), 4.0 / 252.0, 1e-12);
     EXPECT_EQ(tests.number(0, tests.column("A12")), 1.0);
@@ -253,7 +257,7 @@ TEST_F(Report, OutputsMatchGoldenFiles) {
 }
 
 TEST_F(Report, IohExportParsesBackWithTheRunsValues) {
-    const fs::path folder = study_dir_ / "report" / "ioh" / "tlbo_np_50";
+    const fs::path folder = study_dir_ / "report" / "ioh" / "tlbo";
     const fs::path dat = folder / "data_f1_pmsm_load_2_speed_2500" / "IOHprofiler_f1_DIM4.dat";
     std::ifstream in(dat);
     ASSERT_TRUE(in) << dat;
@@ -289,7 +293,7 @@ TEST_F(Report, IohExportParsesBackWithTheRunsValues) {
         GTEST_SKIP() << "no python3 to parse the JSON";
     const std::string check =
         "python3 -c \"import json,sys; d=json.load(open(sys.argv[1])); s=d['scenarios'][0]; "
-        "assert d['algorithm']['name']=='tlbo:np=50' and d['function_id']==1 and not d['maximization']; "
+        "assert d['algorithm']['name']=='tlbo' and d['function_id']==1 and not d['maximization']; "
         "assert s['dimension']==4 and s['path']=='data_f1_pmsm_load_2_speed_2500/IOHprofiler_f1_DIM4.dat'; "
         "assert [r['best']['y'] for r in s['runs']]==[5.0+0.2*i for i in range(5)], s['runs']; "
         "assert all(r['evals']==600 and len(r['best']['x'])==4 for r in s['runs'])\" '" +
@@ -356,7 +360,7 @@ TEST(ReportOptionsCheck, BadOptionsAreClearErrors) {
         build_report(study, options, console);
         FAIL();
     } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("the study has: itlbo, tlbo:np=50, pso"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("the study has: itlbo, tlbo, pso"), std::string::npos)
             << e.what();
     }
     options.reference = "tlbo"; // a name that one algorithm has
