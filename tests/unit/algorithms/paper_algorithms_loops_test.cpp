@@ -35,12 +35,11 @@ struct Switches {
 // index order; for every learner Mean is recomputed from the whole class as it is now and the
 // teacher is the current best (lowest index among equals); clamping as the Objective's. Random
 // draws in the order tlbo.cpp and itlbo.cpp document, the mutation coins from the stream
-// itlbo.cpp derives. Returns every point evaluated, in order.
+// itlbo.cpp derives (a jumped copy of the run's stream). Returns every point evaluated, in order.
 std::vector<Eigen::VectorXd> reference_run(const Problem& problem, std::uint64_t seed, int np, int iterations,
                                            Switches s) {
     Rng rng(seed);
-    Rng peek = rng;
-    Rng coins(mix64(peek.next() ^ stable_hash("itlbo/opposition-based mutation")));
+    Rng coins = Rng(seed).jumped();
     const Box& box = problem.bounds();
     const Eigen::Index d = problem.dimension();
     const auto n = static_cast<std::size_t>(np);
