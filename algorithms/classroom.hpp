@@ -4,18 +4,31 @@
 // algorithms share by definition: the learner phase of eq. 7 (TLBO's, which ITLBO keeps when
 // its subject-stepwise learning is off).
 //
+// Also the choice both (and PSO, in its own terms) offer for the learning factor r: one uniform
+// draw per coordinate (`r=coordinate`, the default) or one per learner and step, used for every
+// coordinate (`r=learner`); tlbo.cpp's header says which the papers use and what each favours.
+//
 // Only bookkeeping and that shared phase live here. Each algorithm writes its own teacher phase,
 // its own main loop and its own extras, so that the test "ITLBO with its three switches off is
 // TLBO, bit for bit" compares two separate codings and can fail.
 #pragma once
 
 #include <Eigen/Core>
+#include <string>
 
 #include "algorithms/sampling.hpp"
 #include "problems/objective.hpp"
 #include "problems/rng.hpp"
 
 namespace mhb::detail {
+
+// How the learning factor r of eqs. 6-9 is drawn: per coordinate, or once per learner and step.
+enum class LearningFactor { coordinate, learner };
+
+// The registry's spelling, `r=coordinate|learner`.
+inline LearningFactor learning_factor_from(const std::string& text) {
+    return text == "learner" ? LearningFactor::learner : LearningFactor::coordinate;
+}
 
 class Classroom {
 public:
@@ -83,16 +96,24 @@ private:
 };
 
 // The learner phase of TLBO (Rao et al. 2011; eq. 7 of Li, Wang, Ji 2017). For each learner i in
-// index order: a partner j != i, read as it is at that moment; r uniform per coordinate;
-// X_new = X_i + r (X_i - X_j) if f(X_i) < f(X_j), else X_i + r (X_j - X_i); greedy.
-// Draws per learner: j, then r_1..r_D. NP evaluations. `trial` is a buffer of size D.
-inline void learner_phase(Classroom& c, Objective& objective, Rng& rng, Eigen::VectorXd& trial) {
+// index order: a partner j != i, read as it is at that moment; X_new = X_i + r (X_i - X_j) if
+// f(X_i) < f(X_j), else X_i + r (X_j - X_i); greedy. r is uniform per coordinate (`coordinate`)
+// or one uniform for the whole step (`learner`, eq. 7's "r_i, the i-th learner's learning
+// factor"). Draws per learner: j, then r_1..r_D or the one r. NP evaluations. `trial` is a
+// buffer of size D.
+inline void learner_phase(Classroom& c, Objective& objective, Rng& rng, Eigen::VectorXd& trial,
+                          LearningFactor r_mode) {
     const auto np = static_cast<std::uint64_t>(c.size());
     for (Eigen::Index i = 0; i < c.size(); ++i) {
         const auto j = static_cast<Eigen::Index>(rng.below_except(np, static_cast<std::uint64_t>(i)));
         const auto xi = c.learner(i);
         const auto xj = c.learner(j);
-        if (c.fitness(i) < c.fitness(j)) {
+        const bool away = c.fitness(i) < c.fitness(j); // from the worse partner, or towards the better
+        if (r_mode == LearningFactor::learner) {
+            const double r = rng.uniform();
+            for (Eigen::Index k = 0; k < trial.size(); ++k)
+                trial[k] = xi[k] + r * (away ? xi[k] - xj[k] : xj[k] - xi[k]);
+        } else if (away) {
             for (Eigen::Index k = 0; k < trial.size(); ++k)
                 trial[k] = xi[k] + rng.uniform() * (xi[k] - xj[k]);
         } else {

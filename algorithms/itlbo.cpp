@@ -3,8 +3,8 @@
 // System Simulation 29(2):393-401. ("ITLBO" names several published algorithms; this is that
 // paper's.) TLBO (algorithms/tlbo.cpp) with three independent switches:
 //
-//   tutorial  (eq. 8)  teacher phase X_new = X_i + r1 (X_teacher - TF Mean) + r2 (X_teacher - X_i),
-//                      r1, r2 uniform per coordinate; greedy. Off: eq. 6, TLBO's.
+//   tutorial  (eq. 8)  teacher phase X_new = X_i + r1 (X_teacher - TF Mean) + r2 (X_teacher - X_i);
+//                      greedy. Off: eq. 6, TLBO's.
 //   stepwise  (eq. 9 and the learner-phase pseudo-code of section 2.2.2) for each learner i, a
 //                      partner j != i; for k = 1..D: change only component k by the learner
 //                      rule (direction chosen from f(X_i) as it is at that step), evaluate, keep
@@ -16,6 +16,20 @@
 //                      obl_bounds=population the class's per-coordinate min and max, taken once
 //                      when the mutation step begins (the dynamic interval of Rahnamayan,
 //                      Tizhoosh, Salama 2008). Each opposite point is evaluated and counted.
+//
+// The learning factor, parameter `r` (as in tlbo.cpp, whose header gives what Rao et al. 2011
+// write and why `learner` is rotation-invariant and `coordinate` favours separable functions):
+//   coordinate (default)  r, or r1 and r2, drawn afresh for every coordinate; in stepwise
+//                         learning a fresh r for every component k.
+//   learner               one r (or one r1 and one r2 with tutorial teaching) per learner and
+//                         teacher step, used for every coordinate; in stepwise learning one r_i per
+//                         learner, reused for every component k.
+// What the paper says. Eq. 7: "r_i = rand(0,1) is the learning factor of the i-th learner"; eq. 9
+// reuses r_i and calls it "the learning step, a random number in 0~1"; eq. 8 has scalars r1, r2
+// "random numbers in 0~1". By that wording r is one number per learner: `learner`. But the
+// pseudo-code of the stepwise loop writes "X_new,i(k) = X_i(k) + rand(X_i(k) - X_j(k))" inside
+// "for k = 1 : D", which reads as a fresh draw per component: `coordinate`. The paper does not
+// settle it; we offer both and keep `coordinate`, the behaviour of every earlier result.
 //
 // Evaluations: NP to initialise; per iteration NP (teacher) + NP*D (stepwise; NP without it)
 // + the number of mutations (about p NP). All on, that is about NP (D + 1.1): 275 for the
@@ -29,10 +43,11 @@
 // learning, mutation.
 //
 // Random draws come from two streams.
-//   The learning stream is the run's `rng`: initial positions, then per teacher step TF and, per
-//   coordinate, r (tutorial off) or r1, r2 (on); per learner j, then one r per coordinate (eq. 7
-//   and eq. 9 alike). With all three switches off these are TLBO's draws in TLBO's order, and
-//   the run is TLBO's bit for bit.
+//   The learning stream is the run's `rng`: initial positions, then per teacher step TF and r
+//   (tutorial off) or r1, r2 (on), per coordinate (r1, r2 interleaved) or once per learner (r1
+//   then r2); per learner j, then r per coordinate or once (eq. 7 and eq. 9 alike). With all
+//   three switches off these are TLBO's draws in TLBO's order, in either `r` mode, and the run is
+//   TLBO's bit for bit.
 //   The mutation stream gives the coin flips, one per learner and iteration while obl is on. It is
 //   a jumped copy of the run's stream (Rng::jumped(), 2^128 draws ahead) taken before anything is
 //   drawn, so it depends on the seed alone and drawing from it never advances the learning stream.
@@ -67,6 +82,7 @@ struct ItlboSettings {
     double p = 0.1;
     bool obl_greedy = false;
     bool obl_population_bounds = false;
+    detail::LearningFactor r_mode = detail::LearningFactor::coordinate;
 };
 
 class Itlbo final : public Optimizer {
@@ -90,7 +106,7 @@ public:
             if (s_.stepwise)
                 stepwise_learning(c, objective, rng, trial);
             else
-                detail::learner_phase(c, objective, rng, trial);
+                detail::learner_phase(c, objective, rng, trial, s_.r_mode);
             if (s_.obl)
                 opposition_mutation(c, objective, mutation_rng, trial, lo, hi);
             objective.end_iteration();
@@ -100,19 +116,29 @@ public:
 private:
     // Eq. 8 with tutorial teaching, eq. 6 without.
     void teaching(detail::Classroom& c, Objective& objective, Rng& rng, Eigen::VectorXd& trial) const {
+        const bool per_learner = s_.r_mode == detail::LearningFactor::learner;
         for (Eigen::Index i = 0; i < c.size(); ++i) {
             const double tf = std::round(1.0 + rng.uniform());
             const auto xi = c.learner(i);
             const auto teacher = c.learner(c.teacher());
-            for (Eigen::Index k = 0; k < trial.size(); ++k) {
-                const double class_step = teacher[k] - tf * c.mean(k);
-                if (s_.tutorial) {
+            if (s_.tutorial && per_learner) {
+                const double r1 = rng.uniform();
+                const double r2 = rng.uniform();
+                for (Eigen::Index k = 0; k < trial.size(); ++k)
+                    trial[k] = xi[k] + r1 * (teacher[k] - tf * c.mean(k)) + r2 * (teacher[k] - xi[k]);
+            } else if (s_.tutorial) {
+                for (Eigen::Index k = 0; k < trial.size(); ++k) {
                     const double r1 = rng.uniform();
                     const double r2 = rng.uniform();
-                    trial[k] = xi[k] + r1 * class_step + r2 * (teacher[k] - xi[k]);
-                } else {
-                    trial[k] = xi[k] + rng.uniform() * class_step;
+                    trial[k] = xi[k] + r1 * (teacher[k] - tf * c.mean(k)) + r2 * (teacher[k] - xi[k]);
                 }
+            } else if (per_learner) {
+                const double r = rng.uniform();
+                for (Eigen::Index k = 0; k < trial.size(); ++k)
+                    trial[k] = xi[k] + r * (teacher[k] - tf * c.mean(k));
+            } else {
+                for (Eigen::Index k = 0; k < trial.size(); ++k)
+                    trial[k] = xi[k] + rng.uniform() * (teacher[k] - tf * c.mean(k));
             }
             const double f = objective.evaluate(trial);
             if (f < c.fitness(i))
@@ -122,16 +148,19 @@ private:
 
     // Eq. 9 and the pseudo-code of section 2.2.2, literally: one component at a time, each
     // change evaluated and kept only if it improves the learner. D evaluations per learner.
-    static void stepwise_learning(detail::Classroom& c, Objective& objective, Rng& rng,
-                                  Eigen::VectorXd& trial) {
+    // r: drawn for every component (coordinate), or once per learner before its loop (learner).
+    void stepwise_learning(detail::Classroom& c, Objective& objective, Rng& rng,
+                           Eigen::VectorXd& trial) const {
         const auto np = static_cast<std::uint64_t>(c.size());
+        const bool per_learner = s_.r_mode == detail::LearningFactor::learner;
         for (Eigen::Index i = 0; i < c.size(); ++i) {
             const auto j = static_cast<Eigen::Index>(rng.below_except(np, static_cast<std::uint64_t>(i)));
             const auto xj = c.learner(j);
+            const double r_i = per_learner ? rng.uniform() : 0.0;
             trial = c.learner(i);
             for (Eigen::Index k = 0; k < trial.size(); ++k) {
                 const double kept = trial[k];
-                const double r = rng.uniform();
+                const double r = per_learner ? r_i : rng.uniform();
                 if (c.fitness(i) < c.fitness(j))
                     trial[k] = kept + r * (kept - xj[k]);
                 else
@@ -188,7 +217,12 @@ void register_itlbo(AlgorithmRegistry& registry) {
               "keep an opposite point only if it is better (off: replace, as the paper does)"),
           ParameterInfo::choice(
               "obl_bounds", "static", {"static", "population"},
-              "opposite within the problem's box (the paper) or the class's current min/max")},
+              "opposite within the problem's box (the paper) or the class's current min/max"),
+          ParameterInfo::choice(
+              "r", "coordinate", {"coordinate", "learner"},
+              "learning factor: one draw per coordinate (default; the stepwise pseudo-code's rand) or "
+              "one per learner and step for every coordinate (eqs. 7 and 9: 'the i-th learner's "
+              "learning factor'; rotation-invariant)")},
          [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
              ItlboSettings s;
              s.np = static_cast<Eigen::Index>(p.integer("np"));
@@ -198,6 +232,7 @@ void register_itlbo(AlgorithmRegistry& registry) {
              s.p = p.real("p");
              s.obl_greedy = p.boolean("obl_greedy");
              s.obl_population_bounds = p.text("obl_bounds") == "population";
+             s.r_mode = detail::learning_factor_from(p.text("r"));
              return std::make_unique<Itlbo>(s);
          }});
 }

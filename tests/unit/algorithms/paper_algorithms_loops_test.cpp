@@ -28,14 +28,16 @@ struct Switches {
     double p = 0.1;
     bool obl_greedy = false;
     bool population_bounds = false;
+    bool per_learner = false; // r=learner: one r (r1, r2) per learner and step
 };
 
 // A deliberately plain TLBO / ITLBO written from the papers (Rao et al. 2011; Li, Wang, Ji 2017,
 // eqs. 5-10 and the pseudo-code of section 2.2.2) as DESIGN.md section 4 reads them: in place,
 // index order; for every learner Mean is recomputed from the whole class as it is now and the
 // teacher is the current best (lowest index among equals); clamping as the Objective's. Random
-// draws in the order tlbo.cpp and itlbo.cpp document, the mutation coins from the stream
-// itlbo.cpp derives (a jumped copy of the run's stream). Returns every point evaluated, in order.
+// draws in the order tlbo.cpp and itlbo.cpp document, for either learning factor (`r`), the
+// mutation coins from the stream itlbo.cpp derives (a jumped copy of the run's stream). Returns
+// every point evaluated, in order.
 std::vector<Eigen::VectorXd> reference_run(const Problem& problem, std::uint64_t seed, int np, int iterations,
                                            Switches s) {
     Rng rng(seed);
@@ -76,25 +78,30 @@ std::vector<Eigen::VectorXd> reference_run(const Problem& problem, std::uint64_t
                     t = m;
             }
             Eigen::VectorXd y(d);
+            double r1 = 0.0;
+            double r2 = 0.0;
             for (Eigen::Index k = 0; k < d; ++k) {
-                const double r1 = rng.uniform();
-                const double r2 = s.tutorial ? rng.uniform() : 0.0;
+                if (k == 0 || !s.per_learner) {
+                    r1 = rng.uniform();
+                    r2 = s.tutorial ? rng.uniform() : 0.0;
+                }
                 y[k] = x[i][k] + r1 * (x[t][k] - tf * mean[k]) + r2 * (x[t][k] - x[i][k]);
             }
             greedy(i, y);
         }
         for (std::size_t i = 0; i < n; ++i) { // learning: eq. 7, or eq. 9 with stepwise
             const auto j = static_cast<std::size_t>(rng.below_except(n, i));
+            const double r_i = s.per_learner ? rng.uniform() : 0.0;
             if (!s.stepwise) {
                 const double direction = f[i] < f[j] ? 1.0 : -1.0;
                 Eigen::VectorXd y(d);
                 for (Eigen::Index k = 0; k < d; ++k)
-                    y[k] = x[i][k] + rng.uniform() * direction * (x[i][k] - x[j][k]);
+                    y[k] = x[i][k] + (s.per_learner ? r_i : rng.uniform()) * direction * (x[i][k] - x[j][k]);
                 greedy(i, y);
                 continue;
             }
             for (Eigen::Index k = 0; k < d; ++k) {
-                const double r = rng.uniform();
+                const double r = s.per_learner ? r_i : rng.uniform();
                 const double direction = f[i] < f[j] ? 1.0 : -1.0;
                 Eigen::VectorXd y = x[i];
                 y[k] = x[i][k] + r * direction * (x[i][k] - x[j][k]);
@@ -162,6 +169,30 @@ TEST(PaperAlgorithmLoops, TlboAndItlboMatchAPlainReferenceImplementation) {
             expect_same_points("itlbo:np=6,p=0.5,obl_greedy=on", *inner, seed, 6, greedy_half);
             expect_same_points("itlbo:np=6,p=0.5,obl_bounds=population", *inner, seed, 6, population_half);
             expect_same_points("itlbo:np=6,stepwise=off,p=0.3", *inner, seed, 6, tutorial_mutation);
+        }
+}
+
+// The same in learner mode (`r=learner`): one r, or one r1 and one r2, per learner and step, for
+// every coordinate; in stepwise learning one r_i per learner for every component.
+TEST(PaperAlgorithmLoops, LearnerModeMatchesThePlainReferenceImplementation) {
+    const auto sphere3 = sphere(3);
+    const Rosenbrock rosenbrock4(4);
+    Switches plain;
+    plain.per_learner = true;
+    Switches all = plain;
+    all.tutorial = all.stepwise = all.obl = true;
+    Switches tutorial_mutation = plain;
+    tutorial_mutation.tutorial = tutorial_mutation.obl = true;
+    tutorial_mutation.p = 0.3;
+    Switches stepwise_only = plain;
+    stepwise_only.stepwise = true;
+    for (const Problem* inner :
+         {static_cast<const Problem*>(sphere3.get()), static_cast<const Problem*>(&rosenbrock4)})
+        for (const std::uint64_t seed : {1ULL, 8ULL}) {
+            expect_same_points("tlbo:np=6,r=learner", *inner, seed, 8, plain);
+            expect_same_points("itlbo:np=6,r=learner", *inner, seed, 6, all);
+            expect_same_points("itlbo:np=6,stepwise=off,p=0.3,r=learner", *inner, seed, 6, tutorial_mutation);
+            expect_same_points("itlbo:np=6,tutorial=off,obl=off,r=learner", *inner, seed, 6, stepwise_only);
         }
 }
 

@@ -13,7 +13,8 @@ constexpr const char* itlbo_all_off = "itlbo:tutorial=off,stepwise=off,obl=off";
 
 // DESIGN.md section 4: "With all three switches off ITLBO must be TLBO, bit for bit, for the
 // same seed". Checked on a separable and a non-separable problem, with budgets that end at an
-// iteration boundary and in the middle of a phase, for several seeds and populations.
+// iteration boundary and in the middle of a phase, for several seeds and populations, and for
+// both learning factors (`r=coordinate`, the default, and `r=learner`).
 TEST(PaperAlgorithms, ItlboWithAllSwitchesOffIsTlboBitForBit) {
     const auto sphere10 = sphere(10);
     const Rosenbrock rosenbrock5(5);
@@ -22,15 +23,16 @@ TEST(PaperAlgorithms, ItlboWithAllSwitchesOffIsTlboBitForBit) {
     for (const Problem* problem : problems)
         for (const Budget& budget : budgets)
             for (const std::uint64_t seed : {1ULL, 7ULL, 2024ULL})
-                for (const std::string np : {"50", "7"}) {
-                    const Outcome tlbo = run("tlbo:np=" + np, *problem, seed, budget);
-                    const Outcome itlbo =
-                        run(std::string(itlbo_all_off) + ",np=" + np, *problem, seed, budget);
-                    EXPECT_TRUE(identical(tlbo, itlbo))
-                        << problem->name() << " seed " << seed << " np " << np << ": tlbo " << tlbo.best_f
-                        << ", itlbo " << itlbo.best_f;
-                    EXPECT_GT(tlbo.iterations_trace.size(), 1u);
-                }
+                for (const std::string np : {"50", "7"})
+                    for (const std::string r : {"", ",r=coordinate", ",r=learner"}) {
+                        const Outcome tlbo = run("tlbo:np=" + np + r, *problem, seed, budget);
+                        const Outcome itlbo =
+                            run(std::string(itlbo_all_off) + ",np=" + np + r, *problem, seed, budget);
+                        EXPECT_TRUE(identical(tlbo, itlbo))
+                            << problem->name() << " seed " << seed << " np " << np << r << ": tlbo "
+                            << tlbo.best_f << ", itlbo " << itlbo.best_f;
+                        EXPECT_GT(tlbo.iterations_trace.size(), 1u);
+                    }
 }
 
 // Evaluations recorded at the end of every iteration, as differences.
@@ -64,6 +66,14 @@ TEST(PaperAlgorithms, EvaluationsPerIterationFollowTheFormulas) {
     expect_costs("itlbo:np=30,p=1,obl_bounds=population", *p, 30, 30 + 300 + 30);
     expect_costs("itlbo:np=30,stepwise=off,p=1", *p, 30, 30 + 30 + 30);
     expect_costs("itlbo:np=30,tutorial=off,stepwise=off,p=0", *p, 30, 60);
+    // The learning factor changes the draws, never the evaluations.
+    expect_costs("pso:np=30,r=learner", *p, 30, 30);
+    expect_costs("tlbo:np=30,r=learner", *p, 30, 60);
+    expect_costs("itlbo:np=30,stepwise=off,obl=off,r=learner", *p, 30, 60);
+    expect_costs("itlbo:np=30,obl=off,r=learner", *p, 30, 30 + 300);
+    expect_costs("itlbo:np=30,p=0,r=learner", *p, 30, 30 + 300);
+    expect_costs("itlbo:np=30,p=1,r=learner", *p, 30, 30 + 300 + 30);
+    expect_costs("itlbo:np=30,stepwise=off,p=1,r=learner", *p, 30, 30 + 30 + 30);
 }
 
 // With p = 0.1 the mutations per iteration are Binomial(NP, 0.1). NP = 50, D = 4 (the paper's
@@ -98,18 +108,21 @@ TEST(PaperAlgorithms, EachSwitchAloneChangesTheRun) {
     }
 }
 
-// The mutation coin flips have a stream of their own (itlbo.cpp), so p = 0 is the same run as
-// obl=off, whatever the other switches.
+// The mutation coin flips have a stream of their own (itlbo.cpp: a jumped copy of the run's
+// stream), so p = 0 is the same run as obl=off, whatever the other switches and learning factor.
 TEST(PaperAlgorithms, OblWithZeroProbabilityIsOblOff) {
     const auto p = sphere(6);
     const Rosenbrock r(4);
     for (const Problem* problem : {static_cast<const Problem*>(p.get()), static_cast<const Problem*>(&r)})
         for (const std::string others : {"", "tutorial=off,", "stepwise=off,", "tutorial=off,stepwise=off,"})
-            for (const std::uint64_t seed : {2ULL, 3ULL}) {
-                const Outcome off = run("itlbo:" + others + "obl=off", *problem, seed, iterations(25));
-                const Outcome zero = run("itlbo:" + others + "p=0", *problem, seed, iterations(25));
-                EXPECT_TRUE(identical(off, zero)) << others << " seed " << seed;
-            }
+            for (const std::string factor : {"", "r=learner,"})
+                for (const std::uint64_t seed : {2ULL, 3ULL}) {
+                    const Outcome off =
+                        run("itlbo:" + others + factor + "obl=off", *problem, seed, iterations(25));
+                    const Outcome zero =
+                        run("itlbo:" + others + factor + "p=0", *problem, seed, iterations(25));
+                    EXPECT_TRUE(identical(off, zero)) << others << factor << " seed " << seed;
+                }
 }
 
 // Same seed, same run (bit for bit); another seed, another run.
@@ -147,7 +160,10 @@ TEST(PaperAlgorithms, BadParametersAreClearErrors) {
               "itlbo: parameter 'obl_bounds' = box is not one of {static, population}");
     EXPECT_EQ(message("itlbo:tutorial=maybe"),
               "itlbo: parameter 'tutorial' = maybe is not one of on/off, true/false, yes/no, 1/0");
-    EXPECT_EQ(message("tlbo:tutorial=on"), "tlbo: unknown parameter 'tutorial'; known: np");
+    EXPECT_EQ(message("tlbo:tutorial=on"), "tlbo: unknown parameter 'tutorial'; known: np, r");
+    for (const char* algorithm : {"tlbo", "itlbo", "pso"})
+        EXPECT_EQ(message(std::string(algorithm) + ":r=particle"),
+                  std::string(algorithm) + ": parameter 'r' = particle is not one of {coordinate, learner}");
     EXPECT_NE(message("pso:inertia=0.7").find("pso: unknown parameter 'inertia'; known: np, w, c1, c2"),
               std::string::npos);
 }
