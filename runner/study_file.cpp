@@ -130,7 +130,7 @@ Study parse_study_ini(std::string_view text, const std::string& origin) {
     return study;
 }
 
-Study read_study_file(const std::filesystem::path& path) {
+std::string read_study_text(const std::filesystem::path& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw std::runtime_error(path.string() + ": is a directory, not a study file (try " +
@@ -140,7 +140,11 @@ Study read_study_file(const std::filesystem::path& path) {
         throw std::runtime_error(path.string() + ": cannot be read (" + std::strerror(errno) + ")");
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    return parse_study_ini(buffer.str(), path.string());
+    return buffer.str();
+}
+
+Study read_study_file(const std::filesystem::path& path) {
+    return parse_study_ini(read_study_text(path), path.string());
 }
 
 std::string study_file_summary(std::string_view text) {

@@ -43,6 +43,10 @@ void parse_study_file(std::string_view text, const std::string& origin, Study& s
 // The same, throwing std::invalid_argument with every error (one per line) if there is any.
 Study parse_study_ini(std::string_view text, const std::string& origin);
 
+// The text of a study file; std::runtime_error naming the file and the reason (a directory, a
+// missing file, no permission) when it cannot be read.
+std::string read_study_text(const std::filesystem::path& path);
+
 // Reads and parses a study file; a file that cannot be read is a std::runtime_error naming it
 // and the reason.
 Study read_study_file(const std::filesystem::path& path);

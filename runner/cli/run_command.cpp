@@ -149,7 +149,7 @@ bool load_base_study(const po::variables_map& vm, Study& study, std::string& nam
         const std::filesystem::path path = vm["study-file"].as<std::string>();
         std::string text;
         try {
-            text = read_whole_file(path);
+            text = read_study_text(path);
         } catch (const std::exception& e) {
             errors.emplace_back(e.what());
             return false;

@@ -43,6 +43,7 @@ const fs::path work = mhb::testing_cli::scratch_directory();
 
 using mhb::testing_cli::lines_of;
 using mhb::testing_cli::read_text;
+using mhb::testing_cli::scratch_directory;
 using Result = mhb::testing_cli::CliResult;
 using mhb::testing_cli::run_shell;
 
@@ -111,11 +112,60 @@ TEST(CliRun, PresetsRunAndOptionsOverrideThem) {
         mhbench("run --study smoke --runs 3 --evaluations 200 --no-report --quiet --out " + dir.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string ini = read_text(dir / "study.ini");
-    EXPECT_NE(ini.find("algorithm = random-search\nproblem = sphere:dim=5\nruns = 3\n"), std::string::npos)
+    EXPECT_NE(ini.find("algorithms = random-search\nproblems = sphere:dim=5\nruns = 3\n"), std::string::npos)
         << ini;
     // --evaluations replaces the preset's whole budget (its 100 iterations are dropped).
-    EXPECT_NE(ini.find("evaluations = 200\n"), std::string::npos);
+    EXPECT_NE(ini.find("budget = evaluations=200\n"), std::string::npos);
     EXPECT_EQ(ini.find("iterations"), std::string::npos);
+}
+
+TEST(CliRun, DryRunPrintsTheExpandedStudyAndItsCostAndRunsNothing) {
+    const fs::path dir = fresh("dry");
+    const Result r = mhbench("run --algorithms 'itlbo:tutorial={on,off},obl={on,off}' tlbo --problems "
+                             "'sphere:dim={2,3}' --budget evaluations=300 --budget iterations=4 --runs 5 "
+                             "--dry-run --threads 2 --out " +
+                             dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_FALSE(fs::exists(dir));
+    const auto has = [&](const std::string& text) { return r.out.find(text) != std::string::npos; };
+    EXPECT_TRUE(has("study: 5 algorithms x 2 problems x 2 budgets x 5 runs = 100 runs; seed 1, seeds common"))
+        << r.out;
+    EXPECT_TRUE(has("  itlbo[T+O+]  itlbo\n")) << r.out;
+    EXPECT_TRUE(has("  itlbo[T-O-]  itlbo:obl=off,tutorial=off\n")) << r.out;
+    EXPECT_TRUE(has("  tlbo         tlbo\n")) << r.out;
+    EXPECT_TRUE(has("  sphere:dim=3\n"));
+    EXPECT_TRUE(has("  evaluations=300: 15000 evaluations\n")) << r.out; // 5 x 2 x 5 x 300, exactly
+    EXPECT_TRUE(has("  iterations=4: about ")) << r.out;
+    EXPECT_TRUE(has("on 2 threads (calibrated on ")) << r.out;
+}
+
+TEST(CliRun, StudyFileAndCommandLineErrorsAreReportedTogetherWithFileAndLine) {
+    const fs::path file = scratch_directory() / "bad-study.ini";
+    std::ofstream(file) << "# a study with mistakes\n"
+                           "algorithms = pso:w=2 \\\n"
+                           "             itlbo:obl={on,off,on}\n"
+                           "problems = sphere:dim=3\n"
+                           "runs = many\n"
+                           "threads = 4\n"
+                           "budget = iterations=10\n";
+    const Result r = mhbench("run --study-file " + file.string() + " --seeds sometimes --dry-run");
+    EXPECT_EQ(r.exit_code, 2);
+    const std::string f = file.string();
+    EXPECT_EQ(lines_of(r.err),
+              (std::vector<std::string>{
+                  "mhbench run: " + f + ":5: runs = many is not an integer",
+                  "mhbench run: " + f +
+                      ":6: unknown key 'threads' (it is not part of a study: give --threads on "
+                      "the command line)",
+                  "mhbench run: seeds = sometimes is not one of {common, per-algorithm}",
+                  "mhbench run: " + f + ":2: pso: parameter 'w' = 2 is outside [0, 1]",
+                  "mhbench run: " + f +
+                      ":2: algorithm 'itlbo:obl={on,off,on}': parameter 'obl': value 'on' is "
+                      "listed twice in the set",
+              }));
+    EXPECT_EQ(mhbench("run --study-file " + scratch_directory().string() + " --dry-run").err,
+              "mhbench run: " + scratch_directory().string() + ": is a directory, not a study file (try " +
+                  (scratch_directory() / "study.ini").string() + ")\n");
 }
 
 // Each case: the arguments, and the error lines expected on stderr (exactly, in order).
