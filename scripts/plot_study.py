@@ -4,7 +4,11 @@
 Usage: plot_study.py REPORT_DIR
 
 Reads REPORT_DIR/curves_iteration.csv, curves_evaluations.csv, parameters_iteration.csv,
-final_values.csv, target_hits.csv and critical_difference.csv (written by `mhbench report`) and writes PDF and PNG files to REPORT_DIR/figures/:
+final_values.csv, target_hits.csv, critical_difference.csv, effects.csv and effect_means.csv
+(written by `mhbench report`) and writes PDF and PNG files to REPORT_DIR/figures/. Algorithms are
+named by their labels (the `label` column). A study with several budgets has one report folder per
+budget, listed in REPORT_DIR/budgets.csv: each is drawn into its own figures/ folder, and every
+title names its budget (budget.txt of the folder).
   convergence_iteration_<problem>   mean best-so-far vs iteration, std band, log y (the paper's Fig. 5)
   convergence_evaluations_<problem> median best-so-far vs evaluations, IQR band, log-log
   parameter_<name>_<problem>        mean best-so-far parameter vs iteration, the true value as a
@@ -17,6 +21,13 @@ final_values.csv, target_hits.csv and critical_difference.csv (written by `mhben
                                     number of evaluations (problems with a known optimum)
   critical_difference               Friedman average ranks with the Nemenyi critical difference
                                     (Demsar 2006), bars joining algorithms that do not differ
+  effects_overview_<design>         every main effect and interaction of a 2^k on/off design per
+                                    problem as a bar (mean over blocks; negative = lower f = helps),
+                                    hatched when not significant after Holm
+  effects_main_<design>_<problem>   main-effects plot: mean response with each switch off and on
+  effects_interaction_<design>_<problem>  interaction plot: mean response of A off/on, one line per
+                                    level of B, for every pair of switches
+Responses that are not finite are left out of the effect figures, and each figure says how many.
 Needs matplotlib (Debian: apt install python3-matplotlib); uses the Agg backend, opens no window.
 """
 import csv
@@ -61,11 +72,15 @@ def save(fig, out_dir, name):
     plt.close(fig)
 
 
+def label_of(row):
+    return row.get("label") or row["algorithm"]
+
+
 def positive(values):
     return all(v > 0 for v in values if not math.isnan(v))
 
 
-def convergence(rows, x_key, centre, low, high, band_label, log_x, title_x, name_prefix, out_dir):
+def convergence(rows, x_key, centre, low, high, band_label, log_x, title_x, name_prefix, out_dir, budget):
     for (problem,), problem_rows in group(rows, "problem").items():
         fig, ax = plt.subplots(figsize=(6, 4))
         all_values = []
@@ -74,7 +89,7 @@ def convergence(rows, x_key, centre, low, high, band_label, log_x, title_x, name
             c = [number(row[centre]) for row in r]
             lo, hi = low(r), high(r)
             all_values += c
-            ax.plot(x, c, label=algorithm)
+            ax.plot(x, c, label=label_of(r[0]))
             ax.fill_between(x, lo, hi, alpha=0.2)
         if positive(all_values):
             ax.set_yscale("log")
@@ -82,7 +97,7 @@ def convergence(rows, x_key, centre, low, high, band_label, log_x, title_x, name
             ax.set_xscale("log")
         ax.set_xlabel(title_x)
         ax.set_ylabel("best-so-far f (%s)" % band_label)
-        ax.set_title(problem)
+        ax.set_title(problem + budget)
         ax.legend(fontsize="small")
         save(fig, out_dir, name_prefix + slug(problem))
 
@@ -101,15 +116,35 @@ def main():
     if len(sys.argv) != 2:
         sys.exit("usage: plot_study.py REPORT_DIR")
     report = sys.argv[1]
+    budgets = read_rows(os.path.join(report, "budgets.csv"))
+    if budgets:
+        for row in budgets:
+            plot_report(os.path.join(report, row["directory"]))
+    else:
+        plot_report(report)
+
+
+def read_budget(report):
+    """ " [budget X]" for titles when the report folder is one budget's, else ""."""
+    path = os.path.join(report, "budget.txt")
+    if not os.path.exists(path):
+        return ""
+    with open(path) as f:
+        text = f.read().strip()
+    return " [budget %s]" % text if text else ""
+
+
+def plot_report(report):
     out_dir = os.path.join(report, "figures")
     os.makedirs(out_dir, exist_ok=True)
+    budget = read_budget(report)
 
     convergence(read_rows(os.path.join(report, "curves_iteration.csv")), "iteration", "mean",
                 lambda r: mean_std_band(r, -1), lambda r: mean_std_band(r, +1), "mean, band: +/- std",
-                False, "iteration", "convergence_iteration_", out_dir)
+                False, "iteration", "convergence_iteration_", out_dir, budget)
     convergence(read_rows(os.path.join(report, "curves_evaluations.csv")), "evaluations", "median",
                 lambda r: [number(x["q25"]) for x in r], lambda r: [number(x["q75"]) for x in r],
-                "median, band: IQR", True, "evaluations", "convergence_evaluations_", out_dir)
+                "median, band: IQR", True, "evaluations", "convergence_evaluations_", out_dir, budget)
 
     parameters = read_rows(os.path.join(report, "parameters_iteration.csv"))
     for (problem, parameter), rows in group(parameters, "problem", "parameter").items():
@@ -119,7 +154,7 @@ def main():
             x = [number(row["iteration"]) for row in r]
             m = [number(row["mean"]) for row in r]
             s = [number(row["std"]) for row in r]
-            ax.plot(x, m, label=algorithm)
+            ax.plot(x, m, label=label_of(r[0]))
             ax.fill_between(x, [a - b for a, b in zip(m, s)], [a + b for a, b in zip(m, s)], alpha=0.15)
             truth, optimum = number(r[0]["true"]), number(r[0]["opt"])
         if not math.isnan(truth):
@@ -128,7 +163,7 @@ def main():
             ax.axhline(optimum, color="grey", linestyle=":", linewidth=1, label="least-squares optimum")
         ax.set_xlabel("iteration")
         ax.set_ylabel(parameter + " (best-so-far, mean +/- std)")
-        ax.set_title(problem)
+        ax.set_title(problem + budget)
         ax.legend(fontsize="small")
         save(fig, out_dir, "parameter_%s_%s" % (slug(parameter), slug(problem)))
 
@@ -139,22 +174,23 @@ def main():
         data = [[number(row["best_f"]) for row in r] for r in by_algorithm.values()]
         ax.boxplot(data)
         ax.set_xticks(range(1, len(data) + 1))
-        ax.set_xticklabels([a for (a,) in by_algorithm.keys()], rotation=20, fontsize="small")
+        ax.set_xticklabels([label_of(r[0]) for r in by_algorithm.values()], rotation=20, fontsize="small")
         if positive([v for d in data for v in d]):
             ax.set_yscale("log")
         ax.set_ylabel("final best f")
-        ax.set_title(problem)
+        ax.set_title(problem + budget)
         save(fig, out_dir, "final_values_" + slug(problem))
 
         if not any(row["evals_to_target"] for row in rows):
             continue
-        curves = [(algorithm, [number(row["evals_to_target"]) for row in r if row["evals_to_target"]], len(r))
-                  for (algorithm,), r in by_algorithm.items()]
-        ecdf_figure(curves, "fraction of runs that reached the target", problem + " (fixed-target ECDF)",
+        curves = [(label_of(r[0]), [number(row["evals_to_target"]) for row in r if row["evals_to_target"]], len(r))
+                  for r in by_algorithm.values()]
+        ecdf_figure(curves, "fraction of runs that reached the target", problem + " (fixed-target ECDF)" + budget,
                     "ecdf_target_" + slug(problem), out_dir)
 
-    target_ecdfs(report, out_dir)
-    critical_difference(report, out_dir)
+    target_ecdfs(report, out_dir, budget)
+    critical_difference(report, out_dir, budget)
+    effects_figures(report, out_dir, budget)
 
 
 def ecdf_figure(curves, ylabel, title, name, out_dir):
@@ -175,20 +211,20 @@ def ecdf_figure(curves, ylabel, title, name, out_dir):
     save(fig, out_dir, name)
 
 
-def target_ecdfs(report, out_dir):
+def target_ecdfs(report, out_dir, budget):
     hits = read_rows(os.path.join(report, "target_hits.csv"))
     for (problem,), rows in group(hits, "problem").items():
-        curves = [(algorithm, [number(row["evaluations"]) for row in r if row["evaluations"]], len(r))
-                  for (algorithm,), r in group(rows, "algorithm").items()]
-        ecdf_figure(curves, "fraction of (run, target) pairs reached", problem + ": targets f - f* = 1e2 ... 1e-8",
-                    "ecdf_targets_" + slug(problem), out_dir)
+        curves = [(label_of(r[0]), [number(row["evaluations"]) for row in r if row["evaluations"]], len(r))
+                  for r in group(rows, "algorithm").values()]
+        ecdf_figure(curves, "fraction of (run, target) pairs reached",
+                    problem + ": targets f - f* = 1e2 ... 1e-8" + budget, "ecdf_targets_" + slug(problem), out_dir)
 
 
-def critical_difference(report, out_dir):
+def critical_difference(report, out_dir, budget):
     rows = read_rows(os.path.join(report, "critical_difference.csv"))
     if not rows:
         return
-    ranked = sorted(((number(r["average_rank"]), r["algorithm"]) for r in rows))
+    ranked = sorted(((number(r["average_rank"]), label_of(r)) for r in rows))
     cd = number(rows[0]["cd"])
     k = len(ranked)
     fig, ax = plt.subplots(figsize=(7, 1.2 + 0.3 * k))
@@ -217,7 +253,125 @@ def critical_difference(report, out_dir):
                     linewidth=3)
             last_end = j
     ax.axis("off")
+    if budget:
+        ax.set_title(budget.strip(), fontsize="small")
     save(fig, out_dir, "critical_difference")
+
+
+def finite(values):
+    """The finite values and how many were left out."""
+    kept = [v for v in values if math.isfinite(v)]
+    return kept, len(values) - len(kept)
+
+
+def left_out_note(ax, count):
+    if count:
+        ax.text(0.01, 0.01, "%d non-finite value%s left out" % (count, "" if count == 1 else "s"),
+                transform=ax.transAxes, fontsize="x-small", color="grey")
+
+
+def short_reading(reading):
+    if not reading:
+        return "see effects table"
+    if reading.startswith("no significant"):
+        return "n.s."
+    if reading.endswith(": helps"):
+        return "helps"
+    if reading.endswith(": hurts"):
+        return "hurts"
+    # "interaction -0.19: A helps more ..." -> "interaction -0.19 (significant)"
+    return reading.split(":")[0] + " (significant)" if reading.startswith("interaction") else "inspect"
+
+
+def effects_figures(report, out_dir, budget):
+    """Main-effects, interaction and overview plots of each 2^k on/off design (effect_means.csv, effects.csv)."""
+    means = read_rows(os.path.join(report, "effect_means.csv"))
+    effects = read_rows(os.path.join(report, "effects.csv"))
+    readings = {(r["Design"], r["Problem"], r["Effect"]): r["Reading"] for r in effects}
+    for (design, problem), rows in group(means, "design", "problem").items():
+        design_slug = slug(design.split(":")[0])
+        scale = rows[0]["scale"]
+        title = "%s\n%s%s (%s blocks)" % (design, problem, budget, rows[0]["blocks"])
+        mains = [r for r in rows if not r["factor2"]]
+        factors = list(OrderedDict.fromkeys(r["factor"] for r in mains))
+        if factors:
+            fig, axes = plt.subplots(1, len(factors), figsize=(2.6 * len(factors) + 1, 3.6), sharey=True,
+                                     squeeze=False)
+            for ax, factor in zip(axes[0], factors):
+                points = [(r["level"], number(r["mean_response"])) for r in mains if r["factor"] == factor]
+                kept, dropped = finite([v for _, v in points])
+                xs = [0 if level == "off" else 1 for level, v in points if math.isfinite(v)]
+                ax.plot(xs, kept, marker="o")
+                ax.set_xticks([0, 1])
+                ax.set_xticklabels(["off", "on"])
+                ax.set_xlim(-0.3, 1.3)
+                ax.set_title("%s\n%s" % (factor, short_reading(readings.get((design, problem, factor), ""))),
+                             fontsize="small")
+                left_out_note(ax, dropped)
+            axes[0][0].set_ylabel("mean " + scale)
+            fig.suptitle(title, fontsize="small", y=1.1)
+            save(fig, out_dir, "effects_main_%s_%s" % (design_slug, slug(problem)))
+        pairs = list(OrderedDict.fromkeys((r["factor"], r["factor2"]) for r in rows if r["factor2"]))
+        if pairs:
+            fig, axes = plt.subplots(1, len(pairs), figsize=(2.8 * len(pairs) + 1, 3.6), sharey=True, squeeze=False)
+            for ax, (a, b) in zip(axes[0], pairs):
+                dropped_total = 0
+                for level_b, style in (("off", "--"), ("on", "-")):
+                    points = [(r["level"], number(r["mean_response"])) for r in rows
+                              if r["factor"] == a and r["factor2"] == b and r["level2"] == level_b]
+                    kept, dropped = finite([v for _, v in points])
+                    dropped_total += dropped
+                    xs = [0 if level == "off" else 1 for level, v in points if math.isfinite(v)]
+                    ax.plot(xs, kept, marker="o", linestyle=style, label="%s %s" % (b, level_b))
+                ax.set_xticks([0, 1])
+                ax.set_xticklabels([a + " off", a + " on"])
+                ax.set_xlim(-0.3, 1.3)
+                effect = "%s x %s" % (a, b)
+                ax.set_title("%s\n%s" % (effect, short_reading(readings.get((design, problem, effect), ""))),
+                             fontsize="small")
+                ax.legend(fontsize="x-small")
+                left_out_note(ax, dropped_total)
+            axes[0][0].set_ylabel("mean " + scale)
+            fig.suptitle(title, fontsize="small", y=1.1)
+            save(fig, out_dir, "effects_interaction_%s_%s" % (design_slug, slug(problem)))
+    for (design,), rows in group(effects, "Design").items():
+        effects_overview(design, rows, out_dir, budget)
+
+
+def effects_overview(design, rows, out_dir, budget):
+    names = list(OrderedDict.fromkeys(r["Effect"] for r in rows))
+    problems = list(OrderedDict.fromkeys(r["Problem"] for r in rows))
+    fig, ax = plt.subplots(figsize=(7, 1.0 + 0.35 * len(names) * len(problems)))
+    height = 0.8 / max(1, len(problems))
+    dropped = 0
+    for p, problem in enumerate(problems):
+        by_effect = {r["Effect"]: r for r in rows if r["Problem"] == problem}
+        ys, values, hatches = [], [], []
+        for i, name in enumerate(names):
+            row = by_effect.get(name)
+            value = number(row["Mean"]) if row else math.nan
+            if not math.isfinite(value):
+                dropped += 1 if row else 0
+                continue
+            ys.append(i + p * height)
+            values.append(value)
+            hatches.append("" if short_reading(row["Reading"]) != "n.s." else "//")
+        bars = ax.barh(ys, values, height=height, label=problem)
+        for bar, hatch in zip(bars, hatches):
+            bar.set_hatch(hatch)
+            if hatch:
+                bar.set_alpha(0.45)
+    ax.axvline(0, color="black", linewidth=0.8)
+    ax.set_yticks([i + 0.4 - height / 2 for i in range(len(names))])
+    ax.set_yticklabels(names, fontsize="small")
+    ax.invert_yaxis()
+    scales = sorted(set(r["Scale"] for r in rows))
+    ax.set_xlabel("mean effect on %s (negative: lower f, helps; hatched: not significant, Holm)" % " / ".join(scales),
+                  fontsize="small")
+    ax.set_title(design + budget, fontsize="small")
+    ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    left_out_note(ax, dropped)
+    save(fig, out_dir, "effects_overview_" + slug(design.split(":")[0]))
 
 
 if __name__ == "__main__":
