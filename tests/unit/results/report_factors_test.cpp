@@ -278,8 +278,8 @@ TEST(ReportPublished, OnlyBesideTheConfigurationsThePaperRan) {
     EXPECT_NE(read_text(dir / "table2_fitness.md").find("never beside a variant"), std::string::npos);
 }
 
-// The 2^2 design tutorial x obl on two problems with common seeds, through the whole report.
-TEST(ReportEffects, TableAndPlotDataForAFactorialDesign) {
+// The 2^2 design tutorial x obl on two problems with common seeds, at `budget`.
+StudyData effects_study(const std::string& budget) {
     StudyData data;
     data.directory = "/nonexistent/ablation";
     const auto spec = [](bool tutorial, bool obl) {
@@ -303,9 +303,15 @@ TEST(ReportEffects, TableAndPlotDataForAFactorialDesign) {
                 // log10 f = -(3 + i / 8) [tutorial on] + (0.25 + i / 16) [obl on] - 1.
                 const double di = static_cast<double>(i);
                 const double y = -1.0 - (tutorial ? 3.0 + di / 8 : 0.0) + (obl ? 0.25 + di / 16 : 0.0);
-                data.runs.push_back(run(a.spec, problem, "iterations=2", i,
-                                        50 + static_cast<std::uint64_t>(i), std::pow(10.0, y)));
+                data.runs.push_back(
+                    run(a.spec, problem, budget, i, 50 + static_cast<std::uint64_t>(i), std::pow(10.0, y)));
             }
+    return data;
+}
+
+// The design through the whole report.
+TEST(ReportEffects, TableAndPlotDataForAFactorialDesign) {
+    const StudyData data = effects_study("iterations=2");
     const fs::path dir = fresh_dir("effects");
     std::ostringstream console;
     build_report(data, options_into(dir), console);
@@ -339,6 +345,32 @@ TEST(ReportEffects, TableAndPlotDataForAFactorialDesign) {
     EXPECT_EQ(means.rows[0][means.column("factor")], "obl");
     EXPECT_EQ(means.rows[0][means.column("level")], "off");
     EXPECT_EQ(means.rows[4][means.column("factor2")], "tutorial");
+}
+
+// Slow: matplotlib draws every figure of two budgets.
+TEST(SlowReportEffectsFigures, DrawnPerBudget) {
+    ReportOptions options;
+    if (!find_matplotlib_python(options.python_candidates))
+        GTEST_SKIP() << "no Python with matplotlib";
+    StudyData data = effects_study("iterations=2");
+    for (auto r : effects_study("evaluations=300").runs) {
+        r.best_f = r.best_f > 1e-3 ? r.best_f : 0.0; // at the optimum: log10 of the floor, finite
+        data.runs.push_back(r);
+    }
+    options = options_into(fresh_dir("effects_figures"));
+    options.figures = true;
+    options.plot_script = fs::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
+    std::ostringstream console;
+    build_report(data, options, console);
+    for (const char* budget : {"iterations_2", "evaluations_300"})
+        for (const char* name :
+             {"effects_overview_itlbo", "effects_main_itlbo_sphere_dim_2",
+              "effects_interaction_itlbo_all_problems_2", "convergence_iteration_sphere_dim_2"})
+            for (const char* ext : {".pdf", ".png"}) {
+                const fs::path figure = options.out_dir / budget / "figures" / (std::string(name) + ext);
+                ASSERT_TRUE(fs::exists(figure)) << figure << "\n" << console.str();
+                EXPECT_GT(fs::file_size(figure), 1000u) << figure;
+            }
 }
 
 } // namespace
