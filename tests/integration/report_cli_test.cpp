@@ -33,32 +33,40 @@ Outcome run_cli(const std::string& arguments) {
     return mhb::testing_cli::run_mhbench(arguments);
 }
 
-fs::path small_study(const std::string& name) {
+// Two algorithms, 3 runs each; with `budgets`, the runs are repeated at every budget, and the
+// study lists its algorithms with labels (algorithms.csv).
+fs::path small_study(const std::string& name, const std::vector<std::string>& budgets = {""}) {
     const fs::path dir =
         fs::temp_directory_path() / ("mhb_report_cli_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     temporary_paths.paths.push_back(dir);
-    StudyWriter writer(dir, "cli test\n", "threads=1\n", {"Rs", "Ld", "Lq", "psi"}, false);
+    std::vector<AlgorithmInfo> algorithms;
+    if (budgets.size() > 1)
+        algorithms = {{"itlbo", "ITLBO", "itlbo:np=50,obl=on,stepwise=on,tutorial=on"},
+                      {"pso", "PSO 2017", "pso:c1=2,c2=2,np=50,w=0.5"}};
+    StudyWriter writer(dir, "cli test\n", "threads=1\n", {"Rs", "Ld", "Lq", "psi"}, false, algorithms);
     std::int64_t id = 0;
-    for (const char* algorithm : {"itlbo", "pso"})
-        for (std::int64_t i = 0; i < 3; ++i, ++id) {
-            RunRecord r;
-            r.run_id = id;
-            r.algorithm = algorithm;
-            r.problem = "pmsm:load=2,speed=2500";
-            r.run_index = i;
-            r.best_f = 4.0 + static_cast<double>(id);
-            r.f_opt = 3.9;
-            r.evaluations = 100;
-            r.iterations = 1;
-            r.best_x = {0.33, 0.00324, 0.00324, 0.0776};
-            r.parameter_names = {"Rs", "Ld", "Lq", "psi"};
-            r.true_parameters = r.best_x;
-            r.x_opt = r.best_x;
-            r.curve = {{0, 50, r.best_f + 1.0, r.best_x}, {1, 100, r.best_f, r.best_x}};
-            r.checkpoints = {{1, r.best_f + 2.0}, {100, r.best_f}};
-            writer.append(r, 0.0);
-        }
+    for (const auto& budget : budgets)
+        for (const char* algorithm : {"itlbo", "pso"})
+            for (std::int64_t i = 0; i < 3; ++i, ++id) {
+                RunRecord r;
+                r.run_id = id;
+                r.algorithm = algorithm;
+                r.problem = "pmsm:load=2,speed=2500";
+                r.budget = budget;
+                r.run_index = i;
+                r.best_f = 4.0 + static_cast<double>(id);
+                r.f_opt = 3.9;
+                r.evaluations = 100;
+                r.iterations = 1;
+                r.best_x = {0.33, 0.00324, 0.00324, 0.0776};
+                r.parameter_names = {"Rs", "Ld", "Lq", "psi"};
+                r.true_parameters = r.best_x;
+                r.x_opt = r.best_x;
+                r.curve = {{0, 50, r.best_f + 1.0, r.best_x}, {1, 100, r.best_f, r.best_x}};
+                r.checkpoints = {{1, r.best_f + 2.0}, {100, r.best_f}};
+                writer.append(r, 0.0);
+            }
     writer.finish();
     return dir;
 }
@@ -78,6 +86,24 @@ TEST(ReportCli, WritesTheTablesAndPrintsThemInMarkdown) {
     EXPECT_NE(o.out.find("| itlbo | 3/3 |"), std::string::npos) << o.out;
     EXPECT_TRUE(fs::exists(dir / "report" / "table3_parameters.tex"));
     EXPECT_TRUE(fs::exists(dir / "report" / "curves_iteration.csv"));
+}
+
+TEST(ReportCli, SeveralBudgetsEachInItsOwnFolderWithLabels) {
+    const fs::path dir = small_study("budgets", {"iterations=1", "evaluations=100"});
+    const Outcome o = run_cli("report '" + dir.string() + "' --no-figures");
+    EXPECT_EQ(o.exit_code, 0) << o.err;
+    EXPECT_NE(o.out.find("2 budgets, each reported in its own folder"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("### Table 2: Fitness of different algorithms (pmsm:load=2,speed=2500) [budget "
+                         "evaluations=100]"),
+              std::string::npos)
+        << o.out;
+    EXPECT_NE(o.out.find("| PSO 2017 | 3/3 |"), std::string::npos) << o.out;
+    EXPECT_TRUE(fs::exists(dir / "report" / "budgets.csv"));
+    EXPECT_TRUE(fs::exists(dir / "report" / "iterations_1" / "table2_fitness.md"));
+    EXPECT_TRUE(fs::exists(dir / "report" / "evaluations_100" / "curves_iteration.csv"));
+    // All seeds are equal here: the runs pair, and the tests table says so.
+    EXPECT_NE(read_text(dir / "report" / "iterations_1" / "tests.md").find("Wilcoxon signed-rank"),
+              std::string::npos);
 }
 
 TEST(ReportCli, DamagedStudyGivesOneLineNamingTheFile) {
