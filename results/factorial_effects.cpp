@@ -339,20 +339,15 @@ std::vector<EffectAnalysis> factorial_effects(const StudyIndex& index, const Fac
     const auto analyse = [&](const std::vector<const ProblemBlocks*>& parts, ResponseScale scale,
                              std::string name) {
         std::vector<std::vector<double>> responses_by_block;
-        EffectAnalysis a;
-        bool paired = true;
-        std::size_t left_out = 0;
-        for (const auto* part : parts) {
+        for (const auto* part : parts)
             for (const auto& b : part->blocks)
                 responses_by_block.push_back(responses(b, scale));
-            paired = paired && part->paired;
-            left_out += part->left_out;
-        }
-        a = analyse_factorial_blocks(responses_by_block, design.factors, scale, alpha);
+        EffectAnalysis a = analyse_factorial_blocks(responses_by_block, design.factors, scale, alpha);
         a.problem = std::move(name);
         a.problems = parts.size();
-        a.paired = paired;
-        a.left_out = left_out;
+        a.paired = std::all_of(parts.begin(), parts.end(), [](const ProblemBlocks* p) { return p->paired; });
+        for (const auto* part : parts)
+            a.left_out += part->left_out;
         out.push_back(std::move(a));
     };
     bool all_have_optimum = true;

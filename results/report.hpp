@@ -1,9 +1,13 @@
 // `mhbench report`: everything rebuilt from a finished study directory alone. Writes into the
 // report directory the tables (Markdown, LaTeX, CSV; the paper's Tables 2-4 for PMSM problems, the
-// statistics tables for any problem), the curve data (CSV) and, when a Python with matplotlib is
-// found, the figures (figures/*.pdf and *.png, drawn by scripts/plot_study.py from the curve data),
-// and the runs in the IOHprofiler format (ioh/, for IOHanalyzer).
-// Prints the Markdown tables to the console. The runner calls it at the end of `mhbench run`.
+// statistics tables for any problem, the effects of each component for variants forming a 2^k
+// on/off design), the curve data (CSV) and, when a Python with matplotlib is found, the figures
+// (figures/*.pdf and *.png, drawn by scripts/plot_study.py from the curve data), and the runs in
+// the IOHprofiler format (ioh/, for IOHanalyzer).
+// A study with several budgets gets all of that once per budget, in <report>/<budget slug>/ (see
+// budget_slug), with budgets.csv, report.md and report.tex on top; a study with one budget keeps
+// the flat layout. Prints the Markdown tables to the console. The runner calls it at the end of
+// `mhbench run`.
 #pragma once
 
 #include <filesystem>
@@ -19,7 +23,8 @@ namespace mhb {
 
 struct ReportOptions {
     std::filesystem::path out_dir;        // empty: <study directory>/report
-    std::optional<std::string> reference; // algorithm to test against (spec or unique name)
+    std::optional<std::string> reference; // algorithm to test against (spec, label or unique name);
+                                          // at a budget that did not run it, the default there
     double alpha = 0.05;                  // significance level of the markers
     std::set<std::string> formats = {"md", "tex", "csv"};
     bool figures = true;
