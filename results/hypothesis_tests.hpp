@@ -2,7 +2,10 @@
 //  - Wilcoxon rank-sum test (= Mann-Whitney U) of two independent samples (runs of two
 //    algorithms on one problem): exact null distribution for small samples without ties, normal
 //    approximation with tie and continuity correction otherwise (the choices of R's wilcox.test).
-//  - Wilcoxon signed-rank test of paired samples (e.g. per-problem medians, paired by problem).
+//  - Wilcoxon signed-rank test of paired samples (runs paired by seed, per-problem medians paired
+//    by problem, per-block factorial effects against 0): zero differences dropped; exact for fewer
+//    than 50 non-zero differences without ties, normal with tie and continuity correction
+//    otherwise (the choices of R's wilcox.test(paired = TRUE); SciPy's default switches at <= 50).
 //  - Friedman test with average ranks (ties get mean ranks; tie-corrected chi-square) and the
 //    Holm-adjusted post-hoc comparisons against a control (Demsar 2006, JMLR 7:1-30).
 //  - Holm's step-down adjustment and the Vargha-Delaney A12 effect size.
