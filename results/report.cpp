@@ -259,8 +259,10 @@ void build_report(const StudyData& study, const ReportOptions& options, std::ost
             all_markdown += "## Budget " + (budget.empty() ? std::string("unspecified") : budget) + " (" +
                             slug + "/)\n\n";
             for (auto& t : write_budget_report(study, budget, out_dir / slug, "budget " + budget + ": ",
-                                               options, console, all_markdown))
+                                               options, console, all_markdown)) {
+                t.id = slug + "_" + t.id; // one LaTeX label per table in the combined report.tex
                 tables.push_back(std::move(t));
+            }
         }
         write_file_atomically(out_dir / "budgets.csv", index_csv);
     }
