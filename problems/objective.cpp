@@ -48,6 +48,21 @@ std::int64_t next_checkpoint(std::int64_t evaluations) {
     }
 }
 
+namespace {
+
+// A point as it is named in an error: every coordinate for small dimensions, the first few else.
+std::string point_text(const Eigen::VectorXd& x) {
+    std::string out = "(";
+    const Eigen::Index shown = std::min<Eigen::Index>(x.size(), 6);
+    for (Eigen::Index i = 0; i < shown; ++i)
+        out += (i ? ", " : "") + format_real(x[i]);
+    if (shown < x.size())
+        out += ", ... " + std::to_string(x.size() - shown) + " more";
+    return out + ")";
+}
+
+} // namespace
+
 Objective::Objective(const Problem& problem, Budget budget, BoundPolicy policy, ObjectiveOptions options)
     : problem_(problem), budget_(budget), policy_(policy), options_(options) {
     budget_.validate();
@@ -96,9 +111,12 @@ double Objective::evaluate(Eigen::VectorXd& x) {
         throw BudgetExhausted{};
     repair(x);
     const double f = problem_.evaluate(x);
-    if (std::isnan(f))
-        throw std::runtime_error("problem '" + problem_.name() + "' returned NaN at evaluation " +
-                                 std::to_string(evaluations_ + 1));
+    // +inf is a legal value, the worst there is. NaN is never one; nor is -inf below a finite
+    // known minimum. Either fails the run, naming the evaluation and the point.
+    if (std::isnan(f) || (f == -std::numeric_limits<double>::infinity() && f_opt_ && std::isfinite(*f_opt_)))
+        throw std::runtime_error("problem '" + problem_.name() + "' returned " +
+                                 (std::isnan(f) ? "NaN" : "-inf") + " at evaluation " +
+                                 std::to_string(evaluations_ + 1) + ", x = " + point_text(x));
     ++evaluations_;
     if (f < best_f_ || best_x_.size() == 0) {
         best_f_ = f;

@@ -77,7 +77,8 @@ public:
 
     // Repairs x in place (so the optimiser keeps the point actually evaluated), evaluates it,
     // counts it and updates the best-so-far. Throws BudgetExhausted if the budget is spent,
-    // std::logic_error on a wrong size, std::runtime_error if the problem returns NaN.
+    // std::logic_error on a wrong size, std::runtime_error if the problem returns NaN, or -inf
+    // where its known minimum is finite (+inf is a legal value: the worst).
     double evaluate(Eigen::VectorXd& x);
     void repair(Eigen::VectorXd& x) const;
 

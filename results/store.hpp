@@ -12,7 +12,9 @@
 //   journal.txt      while a study runs: every finished run, appended and flushed at once, so
 //                    an interrupted study resumes without losing or repeating a run
 //
-// A directory is a finished study exactly when runs.csv exists; it is written last, by rename.
+// A directory is a study when it holds .mhbench-study (or, from before that marker, study.ini
+// with runs.csv or journal.txt); it is a finished study exactly when runs.csv exists, written
+// last, by rename.
 #pragma once
 
 #include <cstdint>
@@ -36,6 +38,9 @@ struct StudyFiles {
     static constexpr const char* trajectories = "trajectories.csv";
     static constexpr const char* timings = "timings.csv";
     static constexpr const char* algorithms = "algorithms.csv";
+    // Marks a directory as a mhbench study, so that --out never takes over a directory of the
+    // user's own files; its text names the format.
+    static constexpr const char* marker = ".mhbench-study";
     static constexpr const char* journal = "journal.txt";
 };
 
@@ -53,6 +58,7 @@ public:
     //   (completed() lists them) and the study resumes.
     // - If it holds a finished study, or an unfinished one of another study, this throws
     //   std::runtime_error unless `overwrite` is set, in which case those files are replaced.
+    // - If it holds anything but a study (a user's own files), this throws, overwrite or not.
     // `parameter_columns` is the union of the named parameters of the study's problems, in order:
     // runs.csv gets the columns P, P_true, P_opt and P_err_pct for each (P_opt: the coordinate of
     // the known optimum, e.g. the least-squares estimate; P_err_pct: 100 (P - P_true) / P_true).
@@ -87,6 +93,9 @@ private:
     std::map<std::int64_t, Block> blocks_;
     std::set<std::int64_t> completed_;
 };
+
+// True when `dir` is a mhbench study directory (see above).
+bool is_study_directory(const std::filesystem::path& dir);
 
 // The header of runs.csv for the given parameter columns.
 std::string runs_csv_header(const std::vector<std::string>& parameter_columns);

@@ -46,6 +46,9 @@ StudyData load_study(const fs::path& dir) {
         throw std::runtime_error(dir.string() +
                                  ": holds an unfinished study (journal.txt but no runs.csv); run the same "
                                  "command again to resume it");
+    if (!is_study_directory(dir))
+        throw std::runtime_error(dir.string() + ": is not a mhbench study directory (no " +
+                                 StudyFiles::marker + ", study.ini or runs.csv)");
     StudyData data;
     data.directory = dir;
     data.study_text = read_whole_file(dir / StudyFiles::study);

@@ -1,5 +1,7 @@
 // StudyWriter: the journal of finished runs, resuming, and the sorted result files (see store.hpp).
+#include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -36,11 +38,23 @@ std::string runs_csv_header(const std::vector<std::string>& parameter_columns) {
     return header + ",message\n";
 }
 
+bool is_study_directory(const fs::path& dir) {
+    std::error_code ec;
+    if (fs::exists(dir / StudyFiles::marker, ec))
+        return true;
+    return fs::exists(dir / StudyFiles::study, ec) &&
+           (fs::exists(dir / StudyFiles::runs, ec) || fs::exists(dir / StudyFiles::journal, ec));
+}
+
 StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string context_text,
                          std::vector<std::string> parameter_columns, bool overwrite,
                          const std::vector<AlgorithmInfo>& algorithms)
     : dir_(std::move(dir)), parameter_columns_(std::move(parameter_columns)) {
     std::error_code ec;
+    if (fs::is_directory(dir_, ec) && !fs::is_empty(dir_, ec) && !is_study_directory(dir_))
+        throw std::runtime_error(dir_.string() + ": is not empty and is not a mhbench study (it has no " +
+                                 StudyFiles::marker +
+                                 "); its files are left alone: choose a new or empty --out");
     fs::create_directories(dir_, ec);
     if (ec || !fs::is_directory(dir_))
         throw std::runtime_error(dir_.string() + ": cannot create the output directory (" +
@@ -64,6 +78,7 @@ StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string conte
     if (!resume)
         for (const char* name : result_files)
             fs::remove(dir_ / name, ec);
+    write_file_atomically(dir_ / StudyFiles::marker, "mhbench study directory, format 2\n");
     write_file_atomically(dir_ / StudyFiles::study, study_text);
     write_file_atomically(dir_ / StudyFiles::context, context_text);
     if (algorithms.empty()) {
@@ -224,7 +239,8 @@ void StudyWriter::append(const RunRecord& record, double wall_seconds) {
     out.write(text.data(), static_cast<std::streamsize>(text.size()));
     out.flush();
     if (!out)
-        throw std::runtime_error((dir_ / StudyFiles::journal).string() + ": writing failed (disk full?)");
+        throw std::runtime_error((dir_ / StudyFiles::journal).string() + ": writing failed (" +
+                                 std::strerror(errno) + ")");
     blocks_[record.run_id] = std::move(block);
     completed_.insert(record.run_id);
 }

@@ -22,16 +22,17 @@ RunRecord execute_run(const RunRequest& request) {
     record.budget = request.budget_text;
     record.seed = request.seed;
     const Problem& problem = *request.problem;
-    record.parameter_names = problem.parameter_names();
-    if (const auto truth = problem.true_parameters())
-        record.true_parameters = to_vector(*truth);
-    if (const auto optimum = problem.known_optimum()) {
-        record.f_opt = optimum->f;
-        if (optimum->x)
-            record.x_opt = to_vector(*optimum->x);
-    }
-
+    // Everything that asks the problem or the optimiser anything is inside the try: a component
+    // that throws fails its own run, never the study.
     try {
+        record.parameter_names = problem.parameter_names();
+        if (const auto truth = problem.true_parameters())
+            record.true_parameters = to_vector(*truth);
+        if (const auto optimum = problem.known_optimum()) {
+            record.f_opt = optimum->f;
+            if (optimum->x)
+                record.x_opt = to_vector(*optimum->x);
+        }
         ObjectiveOptions options;
         options.record_best_x = !record.parameter_names.empty();
         Objective objective(problem, request.budget, request.optimizer->bound_policy(), options);
@@ -53,6 +54,11 @@ RunRecord execute_run(const RunRequest& request) {
     } catch (const std::exception& e) {
         record.ok = false;
         record.message = e.what();
+    } catch (...) {
+        record.ok = false;
+        record.message = "the run threw something that is not a std::exception";
+    }
+    if (!record.ok) {
         record.curve.clear();
         record.checkpoints.clear();
     }

@@ -35,11 +35,13 @@ double schwefel_2_21(std::span<const double> z) {
 double schwefel_2_22(std::span<const double> z) {
     double sum = 0.0;
     double product = 1.0;
+    bool has_zero = false; // a zero factor makes the product 0 even after it has overflowed to inf
     for (const double v : z) {
         sum += std::fabs(v);
+        has_zero = has_zero || v == 0.0;
         product *= std::fabs(v);
     }
-    return sum + product;
+    return sum + (has_zero ? 0.0 : product);
 }
 
 double step(std::span<const double> z) {

@@ -59,6 +59,10 @@ int main(int argc, char** argv) {
         return args.empty() ? exit_usage : exit_ok;
     }
     if (args[0] == "--version") {
+        if (args.size() > 1) {
+            std::cerr << "mhbench: --version takes no other argument (got '" << args[1] << "')\n";
+            return mhb::cli::exit_usage;
+        }
         std::cout << "mhbench " << mhb::build::version << " (commit " << mhb::build::git_commit << ", "
                   << mhb::build::compiler << ", " << mhb::build::build_type << ")\n";
         return exit_ok;

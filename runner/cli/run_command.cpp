@@ -227,24 +227,41 @@ void print_dry_run(const PreparedStudy& prepared, const std::filesystem::path& d
         std::cout << '\n';
 }
 
-void print_summary(const std::filesystem::path& dir, const RunnerOutcome& outcome, double wall_seconds) {
-    const StudyData data = load_study(dir);
+// The summary on stdout (unless quiet) and, whatever quiet says, failed runs on stderr: how many,
+// and the first messages. Returns the number of failed runs and the total.
+std::pair<std::int64_t, std::int64_t> report_outcome(const StudyData& data, const RunnerOutcome& outcome,
+                                                     double wall_seconds, bool quiet) {
     std::int64_t failed = 0;
     std::int64_t evaluations = 0;
+    std::vector<const RunRecord*> failures;
     for (const auto& r : data.runs) {
-        failed += r.ok ? 0 : 1;
         evaluations += r.evaluations;
+        if (!r.ok) {
+            ++failed;
+            if (failures.size() < 3)
+                failures.push_back(&r);
+        }
     }
-    char line[256];
-    std::snprintf(line, sizeof line, "%zu runs (%lld failed), %lld evaluations, %.3g s wall",
-                  data.runs.size(), static_cast<long long>(failed), static_cast<long long>(evaluations),
-                  wall_seconds);
-    std::cout << "study finished: " << line;
-    if (outcome.resumed > 0)
-        std::cout << " (" << outcome.resumed << " runs resumed from an earlier session)";
-    std::cout << "\nresults in " << dir.string() << '\n';
-    if (failed > 0)
-        std::cout << "failed runs carry their message in runs.csv (column 'message')\n";
+    const auto total = static_cast<std::int64_t>(data.runs.size());
+    if (!quiet) {
+        char line[256];
+        std::snprintf(line, sizeof line, "%lld runs (%lld failed), %lld evaluations, %.3g s wall",
+                      static_cast<long long>(total), static_cast<long long>(failed),
+                      static_cast<long long>(evaluations), wall_seconds);
+        std::cout << "study finished: " << line;
+        if (outcome.resumed > 0)
+            std::cout << " (" << outcome.resumed << " runs resumed from an earlier session)";
+        std::cout << "\nresults in " << data.directory.string() << '\n';
+    }
+    if (failed > 0) {
+        std::cerr << "mhbench run: " << failed << " of " << total << " runs failed"
+                  << (failed == total ? " (all of them)" : "") << "; each carries its message in "
+                  << (data.directory / StudyFiles::runs).string() << " (column 'message'). The first:\n";
+        for (const auto* r : failures)
+            std::cerr << "  run " << r->run_id << " (" << r->algorithm << " on " << r->problem << ", run "
+                      << r->run_index << "): " << r->message << '\n';
+    }
+    return {failed, total};
 }
 
 } // namespace
@@ -326,8 +343,10 @@ int run_run_command(const std::vector<std::string>& args) {
                   << dir.string() << "; run the same command again to resume\n";
         return exit_interrupted;
     }
-    if (!quiet)
-        print_summary(dir, outcome, wall.count());
+    const StudyData data = load_study(dir);
+    const auto [failed, total] = report_outcome(data, outcome, wall.count(), quiet);
+    if (failed == total) // nothing to report on, and nothing a script should take for a result
+        return exit_failure;
     if (vm["no-report"].as<bool>())
         return exit_ok;
     // The report is built from the directory alone, exactly as `mhbench report DIR` would.
@@ -337,7 +356,7 @@ int run_run_command(const std::vector<std::string>& args) {
     std::ostringstream discarded;
     if (!quiet)
         std::cout << '\n';
-    build_report(load_study(dir), report, quiet ? discarded : std::cout);
+    build_report(data, report, quiet ? discarded : std::cout);
     return exit_ok;
 }
 

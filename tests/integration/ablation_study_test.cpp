@@ -27,9 +27,10 @@ TEST(SlowAblationStudy, EffectTablesPerBudgetAgreeWithTheRunRecordsAndThePlotsEx
     const fs::path dir = mhb::testing_cli::scratch_directory() / "ablation_small";
     fs::remove_all(dir);
     const bool figures = mhb::find_matplotlib_python({"/usr/bin/python3", "python3"}).has_value();
-    const auto r = run_mhbench("run --study ablation --runs 4 --budget iterations=8 --budget evaluations=1500 "
-                               "--threads 2 --quiet " +
-                               std::string(figures ? "" : "--no-figures ") + "--out '" + dir.string() + "'");
+    const auto r =
+        run_mhbench("run --study ablation --runs 4 --budget iterations=8 --budget evaluations=1500 "
+                    "--threads 2 --quiet " +
+                    std::string(figures ? "" : "--no-figures ") + "--out '" + dir.string() + "'");
     ASSERT_EQ(r.exit_code, 0) << r.err;
 
     // Which variant has which switches on: algorithms.csv gives every parameter of each.
@@ -61,8 +62,9 @@ TEST(SlowAblationStudy, EffectTablesPerBudgetAgreeWithTheRunRecordsAndThePlotsEx
             const auto key = std::make_pair(row[runs.column("problem")], row[runs.column("run")]);
             blocks[key][row[runs.column("algorithm")]] =
                 response(runs.number(i, runs.column("best_f")), runs.number(i, runs.column("f_opt")));
-            if (seeds.count(key) != 0)
+            if (seeds.count(key) != 0) {
                 EXPECT_EQ(seeds[key], row[runs.column("seed")]); // common random numbers
+            }
             seeds[key] = row[runs.column("seed")];
         }
         ASSERT_EQ(blocks.size(), 3u * 4u);
@@ -86,15 +88,18 @@ TEST(SlowAblationStudy, EffectTablesPerBudgetAgreeWithTheRunRecordsAndThePlotsEx
                 ++count;
             }
             ASSERT_EQ(count, 4) << problem;
-            EXPECT_NEAR(effects.number(e, effects.column("Mean")), sum / count, 1e-9 * (1 + std::fabs(sum / count)))
+            EXPECT_NEAR(effects.number(e, effects.column("Mean")), sum / count,
+                        1e-9 * (1 + std::fabs(sum / count)))
                 << budget << " " << problem << " " << factor;
             EXPECT_EQ(effects.rows[e][effects.column("Paired")], "yes");
             ++checked;
         }
-        if (figures)
-            for (const char* name : {"effects_overview_itlbo.png", "effects_main_itlbo_pmsm_load_2_speed_2500.pdf",
-                                     "effects_interaction_itlbo_pmsm_load_2_speed_2500.png"})
-                EXPECT_TRUE(fs::exists(report / "figures" / name)) << report / "figures" / name;
+        if (!figures)
+            continue;
+        for (const char* name :
+             {"effects_overview_itlbo.png", "effects_main_itlbo_pmsm_load_2_speed_2500.pdf",
+              "effects_interaction_itlbo_pmsm_load_2_speed_2500.png"})
+            EXPECT_TRUE(fs::exists(report / "figures" / name)) << report / "figures" / name;
     }
     EXPECT_EQ(checked, 2u * 3u * 3u); // two budgets x three problems x three main effects
 }

@@ -311,3 +311,57 @@ TEST(CliHelp, EveryCommandExplainsItself) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(CliRun, AStudyWhoseRunsAllFailExitsNonZeroAndSaysWhyEvenWhenQuiet) {
+    const fs::path dir = fresh("all_failed");
+    const Result r =
+        mhbench("run --algorithms lshade:r_ninit=1 --problems sphere:dim=2 --evaluations 100 --runs 2 "
+                "--quiet --out " +
+                dir.string());
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("2 of 2 runs failed (all of them)"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("lshade: initial population round(r_ninit * D) = 2 is smaller than n_min = 4"),
+              std::string::npos)
+        << r.err;
+    // Some failed: the study and its report go on, and stderr still says so.
+    const Result some =
+        mhbench("run --algorithms 'lshade:r_ninit=1 tlbo' --problems sphere:dim=2 --evaluations 100 "
+                "--runs 2 --no-report --out " +
+                fresh("some_failed").string());
+    EXPECT_EQ(some.exit_code, 0) << some.err;
+    EXPECT_NE(some.err.find("2 of 4 runs failed; each carries its message in"), std::string::npos)
+        << some.err;
+}
+
+TEST(CliRun, OutIntoADirectoryOfSomeoneElsesFilesIsRefusedAndTouchesNothing) {
+    const fs::path dir = fresh("users_own");
+    fs::create_directories(dir);
+    std::ofstream(dir / "curves.csv") << "my own curves\n";
+    std::ofstream(dir / "study.ini") << "my own notes\n";
+    for (const char* extra : {"", " --overwrite"}) {
+        const Result r = mhbench("run --study smoke --out " + dir.string() + extra);
+        EXPECT_EQ(r.exit_code, 1) << extra;
+        EXPECT_EQ(r.err,
+                  "mhbench run: " + dir.string() +
+                      ": is not empty and is not a mhbench study (it has no .mhbench-study); its files are "
+                      "left alone: choose a new or empty --out\n");
+    }
+    EXPECT_EQ(read_text(dir / "curves.csv"), "my own curves\n");
+    EXPECT_EQ(read_text(dir / "study.ini"), "my own notes\n");
+    EXPECT_FALSE(fs::exists(dir / "runs.csv"));
+    // A study directory carries the marker; running again into it is the usual resume/refusal.
+    const fs::path study = fresh("marked");
+    ASSERT_EQ(mhbench("run --study smoke --quiet --no-report --out " + study.string()).exit_code, 0);
+    EXPECT_TRUE(fs::exists(study / ".mhbench-study"));
+}
+
+TEST(CliMain, VersionTakesNoOtherArgument) {
+    EXPECT_EQ(mhbench("--version").exit_code, 0);
+    const Result r = mhbench("--version --bogus");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(r.err, "mhbench: --version takes no other argument (got '--bogus')\n");
+}
+
+} // namespace

@@ -181,3 +181,20 @@ TEST(ClassicFunctions, BoundsThatExcludeTheOptimumAreRefused) {
 
 } // namespace
 } // namespace mhb
+
+namespace mhb {
+namespace {
+
+// Issue 9: a huge box made the product term overflow to inf before a zero coordinate, and
+// inf x 0 gave NaN at an in-box point. A zero factor makes the product 0, whatever came before.
+TEST(ClassicFunctions, Schwefel222IsFiniteOrPlusInfinityNeverNan) {
+    const auto p = builtin_problems().create("schwefel_2_22:dim=30,bound=1e12");
+    Eigen::VectorXd x = Eigen::VectorXd::Constant(30, 1e12);
+    x[29] = 0.0;
+    EXPECT_EQ(p->evaluate(x), 29e12);
+    x[29] = 1e12;
+    EXPECT_EQ(p->evaluate(x), std::numeric_limits<double>::infinity()); // a legal worst value
+}
+
+} // namespace
+} // namespace mhb
