@@ -1,6 +1,12 @@
 #include "runner/context.hpp"
 
+#include <Eigen/Core>
+#include <boost/version.hpp>
 #include <ctime>
+#include <fstream>
+#include <nlopt.h>
+#include <oneapi/tbb/version.h>
+#include <sys/utsname.h>
 #include <thread>
 #include <unistd.h>
 
@@ -40,6 +46,50 @@ std::string shell_quote(const std::string& arg) {
     return out;
 }
 
+// The first "model name" of /proc/cpuinfo (Linux), else "unknown".
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos) {
+            std::string value = line.substr(line.find(':') + 1);
+            value.erase(0, value.find_first_not_of(' '));
+            return value;
+        }
+    return "unknown";
+}
+
+// PRETTY_NAME of /etc/os-release and the kernel (uname), e.g. "Debian GNU/Linux 12 (bookworm), Linux 6.1".
+std::string operating_system() {
+    std::string name = "unknown";
+    std::ifstream in("/etc/os-release");
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind("PRETTY_NAME=", 0) == 0) {
+            name = line.substr(12);
+            if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
+                name = name.substr(1, name.size() - 2);
+        }
+    utsname u{};
+    if (uname(&u) == 0)
+        name += std::string(", ") + u.sysname + " " + u.release;
+    return name;
+}
+
+std::string library_versions() {
+    int major = 0;
+    int minor = 0;
+    int bugfix = 0;
+    nlopt_version(&major, &minor, &bugfix);
+    const std::string nlopt =
+        std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(bugfix);
+    const std::string eigen = std::to_string(EIGEN_WORLD_VERSION) + "." +
+                              std::to_string(EIGEN_MAJOR_VERSION) + "." + std::to_string(EIGEN_MINOR_VERSION);
+    std::string boost = BOOST_LIB_VERSION;
+    for (char& c : boost)
+        c = c == '_' ? '.' : c;
+    return "oneTBB " + std::string(TBB_runtime_version()) + ", Eigen " + eigen + ", NLopt " + nlopt +
+           ", Boost " + boost;
+}
+
 } // namespace
 
 std::string context_ini(int threads, const std::vector<std::string>& command_line) {
@@ -52,10 +102,14 @@ std::string context_ini(int threads, const std::vector<std::string>& command_lin
     std::string text = "# Where and how this study was run; it does not influence results.\n";
     text += "version = " + std::string(build::version) + '\n';
     text += "git_commit = " + std::string(build::git_commit) + '\n';
+    text += "git_dirty_at_build = " + std::string(build::git_dirty) + '\n';
     text += "compiler = " + std::string(build::compiler) + '\n';
     text += "build_type = " + std::string(build::build_type) + '\n';
     text += "threads = " + std::to_string(threads) + '\n';
     text += "hardware_threads = " + std::to_string(std::thread::hardware_concurrency()) + '\n';
+    text += "cpu = " + cpu_model() + '\n';
+    text += "os = " + operating_system() + '\n';
+    text += "libraries = " + library_versions() + '\n';
     text += "date_utc = " + utc_now() + '\n';
     text += "hostname = " + host_name() + '\n';
     text += "command = " + command + '\n';

@@ -20,9 +20,10 @@ namespace mhb {
 struct RunnerOptions {
     int threads = 0;                         // 0: every hardware thread
     const std::atomic<bool>* stop = nullptr; // may be set from a signal handler
-    // Called after each run is journaled, with the runs now kept and the study's total.
-    // Calls are serialised (never two at once), but may come from any worker thread.
-    std::function<void(std::int64_t kept, std::int64_t total)> on_run_finished;
+    // Called after each run is journaled, with the runs now kept, the study's total and the
+    // evaluations that run spent. Calls are serialised (never two at once), but may come from any
+    // worker thread.
+    std::function<void(std::int64_t kept, std::int64_t total, std::int64_t evaluations)> on_run_finished;
 };
 
 struct RunnerOutcome {

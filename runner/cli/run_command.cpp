@@ -95,7 +95,9 @@ po::options_description make_options() {
         ("threads", po::value<int>(), "worker threads (default: all hardware threads); results do not depend on it")
         ("out", po::value<std::string>(), "study directory (default: studies/<preset name, or 'study'>)")
         ("overwrite", po::bool_switch(), "replace a finished study (or another study's unfinished one) in --out")
-        ("progress", po::bool_switch(), "show the progress bar even when stderr is not a terminal")
+        ("progress", po::bool_switch(), "draw the progress bar even when stderr is not a terminal")
+        ("progress-interval", po::value<double>()->default_value(10.0, "10"),
+         "seconds between the plain progress lines written when stderr is not a terminal (batch logs)")
         ("no-report", po::bool_switch(), "do not build the report (tables, curve data, figures) after the study; "
                                          "`mhbench report DIR` builds it at any time")
         ("no-figures", po::bool_switch(), "build the report without figures (they take most of its time)")
@@ -274,6 +276,9 @@ int run_run_command(const std::vector<std::string>& args) {
 
     std::vector<std::string> errors;
     int threads = 0;
+    if (!(vm["progress-interval"].as<double>() > 0.0))
+        errors.push_back("progress-interval = " + format_real(vm["progress-interval"].as<double>()) +
+                         " is outside (0, inf)");
     if (vm.count("threads") != 0) {
         threads = vm["threads"].as<int>();
         if (threads < 1)
@@ -323,15 +328,21 @@ int run_run_command(const std::vector<std::string>& args) {
 
     const bool quiet = vm["quiet"].as<bool>();
     const bool forced = vm["progress"].as<bool>();
-    const bool show_progress = !quiet && (forced || stderr_is_terminal());
-    // Without --progress the bar waits a second, so that short studies print nothing.
+    // A terminal gets the bar (after a second, so short studies print nothing); a batch log gets a
+    // plain line every --progress-interval seconds; --quiet gets neither.
+    ProgressOptions shown;
+    shown.terminal = forced || stderr_is_terminal();
+    shown.delay_seconds = forced ? 0.0 : 1.0;
+    shown.line_interval = vm["progress-interval"].as<double>();
     ProgressBar progress(std::cerr, prepared->run_count(),
-                         static_cast<std::int64_t>(writer.completed().size()), forced ? 0.0 : 1.0);
+                         static_cast<std::int64_t>(writer.completed().size()), shown);
     RunnerOptions runner;
     runner.threads = threads;
     runner.stop = &stop_requested;
-    if (show_progress)
-        runner.on_run_finished = [&progress](std::int64_t kept, std::int64_t) { progress.update(kept); };
+    if (!quiet)
+        runner.on_run_finished = [&progress](std::int64_t kept, std::int64_t, std::int64_t evaluations) {
+            progress.update(kept, evaluations);
+        };
 
     const auto started = std::chrono::steady_clock::now();
     const RunnerOutcome outcome = run_study(*prepared, writer, runner);

@@ -32,23 +32,43 @@ TEST(Progress, FormatsDurations) {
     EXPECT_EQ(format_duration(-3.0), "0:00");
 }
 
-TEST(Progress, DrawsRunsDoneOfTotalWhenShownAndNothingBeforeTheDelay) {
+TEST(Progress, DrawsRunsRatesAndEtaWhenShownAndNothingBeforeTheDelay) {
     std::ostringstream shown;
-    ProgressBar bar(shown, 4, 1, 0.0);
-    bar.update(4); // the last run always draws
+    ProgressBar bar(shown, 4, 1, ProgressOptions{true, 0.0, 10.0});
+    bar.update(4, 1000); // the last run always draws
     bar.finish();
     const std::string text = shown.str();
-    EXPECT_NE(text.find("\r[##############################] 4/4 runs  elapsed 0:00  eta 0:00"),
-              std::string::npos)
-        << text;
+    EXPECT_EQ(text.rfind("\r[##############################] 4/4 runs  ", 0), 0u) << text;
+    EXPECT_NE(text.find(" runs/s  "), std::string::npos) << text;
+    EXPECT_NE(text.find(" evals/s  elapsed 0:00  eta 0:00"), std::string::npos) << text;
     EXPECT_EQ(text.back(), '\n');
 
     std::ostringstream quiet;
-    ProgressBar late(quiet, 4, 0, 3600.0);
+    ProgressBar late(quiet, 4, 0, ProgressOptions{true, 3600.0, 10.0});
     late.update(1);
     late.update(4);
     late.finish();
     EXPECT_EQ(quiet.str(), "");
+}
+
+TEST(Progress, ABatchLogGetsAPlainLinePerIntervalAndNoCarriageReturn) {
+    std::ostringstream log;
+    ProgressBar lines(log, 3, 0, ProgressOptions{false, 0.0, 1e-9});
+    lines.update(1, 50);
+    lines.update(2, 50);
+    lines.finish();
+    const std::string text = log.str();
+    EXPECT_EQ(text.find('\r'), std::string::npos);
+    EXPECT_EQ(text.rfind("progress: 1/3 runs (33%), ", 0), 0u) << text;
+    EXPECT_NE(text.find("\nprogress: 2/3 runs (67%), "), std::string::npos) << text;
+    EXPECT_NE(text.find(" evals/s, elapsed 0:00, eta "), std::string::npos) << text;
+    // Within the interval nothing more is written.
+    std::ostringstream sparse;
+    ProgressBar rare(sparse, 3, 0, ProgressOptions{false, 0.0, 3600.0});
+    rare.update(1, 5);
+    rare.update(3, 5);
+    rare.finish();
+    EXPECT_EQ(sparse.str(), "");
 }
 
 } // namespace
