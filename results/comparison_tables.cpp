@@ -37,6 +37,11 @@ double value_at_budget(const RunRecord& r, double budget) {
     return value;
 }
 
+// What a group without a successful run shows where its statistics would be.
+std::string no_successful_run_text(const RunGroup& g) {
+    return "no successful run (" + std::to_string(g.failed) + " failed)";
+}
+
 std::string percent_text(double fraction) {
     return format_number(100.0 * fraction, 3) + "%";
 }
@@ -110,12 +115,28 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
                 "IQR",     "Best",      "Worst", "Mean error f - f*",  "Success rate", "ERT"};
     for (double fraction : options.budget_fractions)
         t.header.push_back("Median at " + percent_text(fraction) + " budget");
+    // A problem on which no run of any algorithm records reaching a target had none set.
+    const auto problem_has_target = [&](const std::string& problem) {
+        for (const auto& a : index.algorithms_on(problem))
+            for (const auto* r : index.find(problem, a)->runs)
+                if (r->evaluations_to_target.has_value())
+                    return true;
+        return false;
+    };
+    std::size_t without_success = 0;
     for (const auto& g : index.groups()) {
-        if (g.runs.empty()) {
+        const bool has_target = problem_has_target(g.problem);
+        if (g.runs.empty()) { // every run failed: a row that says so (success rate 0, ERT inf)
+            ++without_success;
             std::vector<TableCell> row(t.header.size(), empty_cell());
             row[0] = text_cell(g.problem);
             row[1] = text_cell(index.label(g.algorithm));
             row[2] = text_cell("0/" + std::to_string(g.failed));
+            row[4] = text_cell(no_successful_run_text(g));
+            if (has_target) {
+                row[11] = number_cell(0.0, 3);
+                row[12] = text_cell("inf");
+            }
             t.add_row(std::move(row));
             continue;
         }
@@ -138,11 +159,6 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
             successes += h.success ? 1 : 0;
         const double total = static_cast<double>(g.runs.size() + g.failed);
         const auto ert = expected_running_time(hits);
-        // A problem on which no run of any algorithm records reaching a target had none set.
-        bool has_target = false;
-        for (const auto& a : index.algorithms_on(g.problem))
-            for (const auto* r : index.find(g.problem, a)->runs)
-                has_target = has_target || r->evaluations_to_target.has_value();
         std::vector<TableCell> row = {
             text_cell(g.problem),
             text_cell(index.label(g.algorithm)),
@@ -172,6 +188,13 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
         "set); ERT = evaluations of all runs (to the target for "
         "successful ones) / successful runs, as COCO defines it. Budget columns: median best-so-far after "
         "that fraction of the largest evaluation count of the group.";
+    if (index.failed_runs() > 0)
+        t.caption += " Runs: successful/total; a failed run counts as unsuccessful in the success rate and "
+                     "is left out of every other column.";
+    if (without_success > 0)
+        t.caption += " " + std::to_string(without_success) +
+                     (without_success == 1 ? " group has" : " groups have") + " no successful run.";
+    t.caption += left_out_notes(index);
     return t;
 }
 
@@ -225,6 +248,13 @@ Table tests_table(const StudyIndex& index, const std::vector<Comparison>& compar
         row.push_back(text_cell(c.paired ? "signed-rank" : "rank-sum"));
         t.add_row(std::move(row));
     }
+    std::vector<std::string> untested;
+    for (const auto& p : index.problems()) {
+        const RunGroup* reference = index.group(p, options.reference);
+        if (index.find(p, options.reference) != nullptr || reference == nullptr)
+            continue;
+        untested.push_back(p);
+    }
     std::string caption =
         "Two-sided Wilcoxon rank-sum test (Mann-Whitney U; W = U of the algorithm) of each algorithm's "
         "final values against the reference's, Holm-adjusted across the comparisons of each problem; A12 = "
@@ -245,6 +275,13 @@ Table tests_table(const StudyIndex& index, const std::vector<Comparison>& compar
                                                          : "the rank-sum test (no runs paired)")) +
                ". +: significantly better than the reference, -: significantly worse, =: no significant "
                "difference.";
+    if (!untested.empty()) {
+        caption += " Not tested (every run of the reference failed):";
+        for (std::size_t i = 0; i < untested.size(); ++i)
+            caption += (i == 0 ? " " : ", ") + untested[i];
+        caption += ".";
+    }
+    caption += left_out_notes(index);
     t.caption = std::move(caption);
     return t;
 }
@@ -271,7 +308,8 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
         for (const auto& a : index.algorithms()) {
             const auto* g = index.find(p, a);
             if (g == nullptr) {
-                row.push_back(empty_cell());
+                const RunGroup* failed = index.group(p, a);
+                row.push_back(failed == nullptr ? empty_cell() : text_cell(no_successful_run_text(*failed)));
                 continue;
             }
             least_runs = std::min(least_runs, g->runs.size());
@@ -281,8 +319,9 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
             for (const auto& c : comparisons)
                 if (c.problem == p && c.algorithm == a)
                     marker = " " + c.marker;
+            // No bold when the best mean is infinite: nothing is best where every mean is inf.
             TableCell cell{format_number(s.mean, 4) + " (" + format_number(s.std, 2) + ")" + marker, "",
-                           s.mean == best};
+                           std::isfinite(best) && s.mean == best};
             row.push_back(cell);
         }
         const bool compared = std::any_of(comparisons.begin(), comparisons.end(),
@@ -312,7 +351,7 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
                 " runs; lowest mean in bold. Markers against the reference " +
                 index.label(options.reference) + ": " + tests +
                 ", Holm correction across each problem's comparisons, alpha = " + alpha_text(options.alpha) +
-                "; + better, - worse, = no significant difference.";
+                "; + better, - worse, = no significant difference." + left_out_notes(index);
     return t;
 }
 
@@ -367,16 +406,21 @@ std::optional<Table> across_problems_table(const StudyIndex& index, const Compar
                    number_cell(signed_adjusted[i], 3), text_cell(signed_tests[j].name)});
         ++i;
     }
+    const std::size_t left_out = index.problems().size() - problems.size();
     t.caption =
         "Over " + std::to_string(problems.size()) +
         " problems (per-problem medians of the final values; rank 1 = "
-        "lowest). Friedman test: chi-square = " +
-        format_number(friedman.chi_square, 5) + ", df = " + format_number(friedman.degrees_of_freedom) +
+        "lowest" +
+        (left_out == 0 ? std::string()
+                       : "; " + std::to_string(left_out) + (left_out == 1 ? " problem" : " problems") +
+                             " left out, on which some algorithm has no successful run") +
+        "). Friedman test: chi-square = " + format_number(friedman.chi_square, 5) +
+        ", df = " + format_number(friedman.degrees_of_freedom) +
         ", p = " + format_number(friedman.p_value, 3) +
         ". Post-hoc: z = (R_j - R_ref) / sqrt(k(k+1)/(6N)) against the reference, Holm-adjusted. Wilcoxon "
         "signed-rank test of each algorithm's per-problem medians against the reference's, paired by "
         "problem, Holm-adjusted; alpha = " +
-        alpha_text(options.alpha) + ".";
+        alpha_text(options.alpha) + "." + left_out_notes(index);
     return t;
 }
 

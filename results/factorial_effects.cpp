@@ -45,8 +45,11 @@ struct ProblemBlocks {
     std::string problem;
     std::vector<RawBlock> blocks;
     std::size_t left_out = 0;
+    std::size_t infinite = 0; // runs of the kept blocks whose f is +inf (or -inf)
     bool has_optimum = true;
     bool paired = false;
+    // log10(f - f*) needs f* and finite f: log10(inf) = inf would make every effect inf or NaN.
+    [[nodiscard]] bool log_scale() const { return has_optimum && infinite == 0; }
 };
 
 ProblemBlocks collect_blocks(const StudyIndex& index, const FactorialDesign& design,
@@ -68,7 +71,7 @@ ProblemBlocks collect_blocks(const StudyIndex& index, const FactorialDesign& des
         bool complete = true;
         for (const RunGroup* g : groups) {
             const RunRecord* r = g == nullptr ? nullptr : g->run_with_index(i);
-            if (r == nullptr || !std::isfinite(r->best_f)) {
+            if (r == nullptr) { // the variant failed (or never ran) at this run index
                 complete = false;
                 break;
             }
@@ -76,10 +79,13 @@ ProblemBlocks collect_blocks(const StudyIndex& index, const FactorialDesign& des
             block.f_opt.push_back(r->f_opt ? *r->f_opt : std::numeric_limits<double>::quiet_NaN());
             out.has_optimum = out.has_optimum && r->f_opt.has_value() && std::isfinite(*r->f_opt);
         }
-        if (complete)
+        if (complete) {
+            out.infinite += static_cast<std::size_t>(
+                std::count_if(block.f.begin(), block.f.end(), [](double f) { return std::isinf(f); }));
             out.blocks.push_back(std::move(block));
-        else
+        } else {
             ++out.left_out;
+        }
     }
     return out;
 }
@@ -346,19 +352,21 @@ std::vector<EffectAnalysis> factorial_effects(const StudyIndex& index, const Fac
         a.problem = std::move(name);
         a.problems = parts.size();
         a.paired = std::all_of(parts.begin(), parts.end(), [](const ProblemBlocks* p) { return p->paired; });
-        for (const auto* part : parts)
+        for (const auto* part : parts) {
             a.left_out += part->left_out;
+            a.infinite_runs += part->infinite;
+        }
         out.push_back(std::move(a));
     };
-    bool all_have_optimum = true;
+    bool all_log_scale = true;
     std::vector<const ProblemBlocks*> all;
     for (const auto& p : problems) {
-        analyse({&p}, p.has_optimum ? ResponseScale::log10_gap : ResponseScale::rank, p.problem);
-        all_have_optimum = all_have_optimum && p.has_optimum;
+        analyse({&p}, p.log_scale() ? ResponseScale::log10_gap : ResponseScale::rank, p.problem);
+        all_log_scale = all_log_scale && p.log_scale();
         all.push_back(&p);
     }
     if (all.size() >= 2)
-        analyse(all, all_have_optimum ? ResponseScale::log10_gap : ResponseScale::rank,
+        analyse(all, all_log_scale ? ResponseScale::log10_gap : ResponseScale::rank,
                 "all problems (" + std::to_string(all.size()) + ")");
     return out;
 }
@@ -371,10 +379,13 @@ std::optional<Table> effects_table(const std::vector<DesignEffects>& designs,
     t.header = {"Design", "Problem", "Scale", "Blocks", "Paired",   "Effect", "Mean",
                 "Median", "Test",    "V",     "p",      "p (Holm)", "Reading"};
     std::vector<std::string> left_out_notes;
+    std::vector<std::string> infinite_notes;
     for (const auto& d : designs)
         for (const auto& a : d.analyses) {
             if (a.left_out > 0 && a.problems == 1)
                 left_out_notes.push_back(std::to_string(a.left_out) + " on " + a.problem);
+            if (a.infinite_runs > 0 && a.problems == 1)
+                infinite_notes.push_back(std::to_string(a.infinite_runs) + " on " + a.problem);
             for (const auto& e : a.effects)
                 t.add_row({text_cell(d.design.description()), text_cell(a.problem),
                            text_cell(scale_name(a.scale)), text_cell(std::to_string(a.blocks)),
@@ -407,8 +418,13 @@ std::optional<Table> effects_table(const std::vector<DesignEffects>& designs,
         "optimum, ranks otherwise).";
     if (!left_out_notes.empty())
         caption +=
-            " Run indices left out (a variant failed or gave a non-finite f): " + join(left_out_notes, ", ") +
-            ".";
+            " Run indices left out (a variant failed or did not run): " + join(left_out_notes, ", ") + ".";
+    if (!infinite_notes.empty())
+        caption +=
+            " Runs that ended at +inf (kept as the worst rank; such a problem, and the pooled analysis, "
+            "use the within-block rank scale, since log10(inf - f*) = inf would make every effect inf "
+            "or undefined): " +
+            join(infinite_notes, ", ") + ".";
     for (const auto& r : rejected)
         caption += " Not a full factorial: " + r.name + " (" + r.why_not + ").";
     t.caption = std::move(caption);

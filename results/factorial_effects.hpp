@@ -13,8 +13,13 @@
 // floor = max(1e-300, 4 ulp(|f*|)) = max(1e-300, 4 eps |f*|) (a gap below what doubles resolve
 // near f*, or a negative one from rounding, is "at the optimum"); otherwise the rank of f among the
 // 2^k variants of its block (1 = lowest f, ties share their mean rank).
-// Block: one (problem, run index) in which all 2^k variants have a successful run with a finite
-// f; other run indices are left out (and counted). With common random numbers all variants of a
+// Infinite values: a problem on which any run of a kept block ended at +inf (a legal, worst value)
+// is analysed on the rank scale, where +inf is simply the worst rank (ties with another +inf);
+// log10(inf) = inf would make every effect it touches inf or NaN, and leaving those blocks out
+// would hide exactly the runs a component failed to rescue. The pooled analysis then uses ranks
+// too. The caption counts such runs per problem.
+// Block: one (problem, run index) in which all 2^k variants have a successful run; other run
+// indices (a variant failed) are left out (and counted). With common random numbers all variants of a
 // block start from the same seed, so an effect is a paired difference.
 // Effect in a block: mean response of the variants where the contrast is + minus the mean where
 // it is -, i.e. averaged over the other factors. Main effect of A: A on (+) vs off (-);
@@ -93,7 +98,8 @@ struct EffectAnalysis {
     std::size_t problems = 1;
     ResponseScale scale = ResponseScale::rank;
     std::size_t blocks = 0;
-    std::size_t left_out = 0;            // run indices without all variants successful and finite
+    std::size_t left_out = 0;            // run indices without a successful run of every variant
+    std::size_t infinite_runs = 0;       // runs of the kept blocks that ended at +inf (or -inf)
     bool paired = false;                 // every problem's runs paired by seed (common random numbers)
     std::vector<EffectEstimate> effects; // k main effects, then the k(k-1)/2 interactions
     std::vector<LevelMean> level_means;

@@ -136,7 +136,7 @@ TestResult signed_rank_test(const std::vector<double>& x, const std::vector<doub
         throw std::invalid_argument("Wilcoxon signed-rank test needs pairs: samples of equal length");
     std::vector<double> differences;
     for (std::size_t i = 0; i < x.size(); ++i)
-        if (x[i] - y[i] != 0.0)
+        if (x[i] != y[i]) // equal values (two +inf included, whose difference would be NaN) are a tie
             differences.push_back(x[i] - y[i]);
     TestResult r;
     if (differences.empty()) {

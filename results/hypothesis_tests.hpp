@@ -10,6 +10,9 @@
 //    Holm-adjusted post-hoc comparisons against a control (Demsar 2006, JMLR 7:1-30).
 //  - Holm's step-down adjustment and the Vargha-Delaney A12 effect size.
 // All p-values are two-sided. Distributions come from Boost.Math.
+// +inf (a legal final value, the worst) is ranked above every finite value and ties with +inf;
+// in the signed-rank test a pair of equal infinities is a zero difference and +inf - finite the
+// largest magnitude, so every test here is defined for samples holding +inf.
 #pragma once
 
 #include <string>

@@ -39,8 +39,11 @@ std::string json_number(double value) {
     return std::isfinite(value) ? csv_number(value) : "null";
 }
 
-// The run's best-so-far as recorded, reduced to its strict improvements, by evaluations.
-std::vector<std::pair<std::int64_t, double>> improvements(const RunRecord& r) {
+using Points = std::vector<std::pair<std::int64_t, double>>;
+
+// The run's best-so-far as recorded, reduced to its strict improvements, by evaluations; points
+// whose f is not finite are left out and counted in `left_out`.
+std::vector<std::pair<std::int64_t, double>> improvements(const RunRecord& r, std::size_t& left_out) {
     std::vector<std::pair<std::int64_t, double>> points;
     for (const auto& p : r.curve)
         points.emplace_back(p.evaluations, p.best_f);
@@ -49,18 +52,23 @@ std::vector<std::pair<std::int64_t, double>> improvements(const RunRecord& r) {
     std::stable_sort(points.begin(), points.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<std::pair<std::int64_t, double>> out;
-    for (const auto& p : points)
-        if (p.first > 0 && (out.empty() || p.second < out.back().second))
+    for (const auto& p : points) {
+        if (p.first <= 0)
+            continue;
+        if (!std::isfinite(p.second))
+            ++left_out;
+        else if (out.empty() || p.second < out.back().second)
             out.push_back(p);
-    if (out.empty() || r.best_f < out.back().second)
+    }
+    if (std::isfinite(r.best_f) && (out.empty() || r.best_f < out.back().second))
         out.emplace_back(r.evaluations, r.best_f);
     return out;
 }
 
 } // namespace
 
-std::size_t write_ioh_export(const StudyIndex& index, const fs::path& dir) {
-    std::size_t files = 0;
+IohExportSummary write_ioh_export(const StudyIndex& index, const fs::path& dir) {
+    IohExportSummary summary;
     for (const auto& algorithm : index.algorithms()) {
         const fs::path folder = dir / file_name_part(algorithm);
         for (std::size_t f = 0; f < index.problems().size(); ++f) {
@@ -71,18 +79,27 @@ std::size_t write_ioh_export(const StudyIndex& index, const fs::path& dir) {
             const std::string id = std::to_string(f + 1);
             const std::string name = file_name_part(problem);
             // Runs grouped by dimension (one problem spec has one dimension; kept general).
-            std::map<std::size_t, std::vector<const RunRecord*>> by_dimension;
-            for (const auto* r : group->runs)
-                by_dimension[r->best_x.size()].push_back(r);
+            std::map<std::size_t, std::vector<std::pair<const RunRecord*, Points>>> by_dimension;
+            for (const auto* r : group->runs) {
+                std::size_t left_out = 0;
+                Points points = improvements(*r, left_out);
+                if (points.empty()) { // nothing finite to show: the run ended at +inf
+                    ++summary.runs_left_out;
+                    continue;
+                }
+                summary.points_left_out += left_out;
+                by_dimension[r->best_x.size()].emplace_back(r, std::move(points));
+            }
+            if (by_dimension.empty())
+                continue;
             std::string scenarios;
             for (const auto& [dimension, runs] : by_dimension) {
                 const std::string dat_relative = "data_f" + id + "_" + name + "/IOHprofiler_f" + id + "_DIM" +
                                                  std::to_string(dimension) + ".dat";
                 std::string dat;
                 std::string run_entries;
-                for (const auto* r : runs) {
+                for (const auto& [r, points] : runs) {
                     dat += "evaluations raw_y\n";
-                    const auto points = improvements(*r);
                     for (const auto& [evaluations, y] : points)
                         dat += std::to_string(evaluations) + ' ' + csv_number(y) + '\n';
                     std::string x;
@@ -95,7 +112,7 @@ std::size_t write_ioh_export(const StudyIndex& index, const fs::path& dir) {
                 }
                 fs::create_directories(folder / ("data_f" + id + "_" + name));
                 write_file_atomically(folder / dat_relative, dat);
-                ++files;
+                ++summary.files;
                 scenarios += std::string(scenarios.empty() ? "" : ",\n") +
                              "\t\t{\"dimension\": " + std::to_string(dimension) +
                              ",\n\t\t\"path\": " + json_string(dat_relative) + ",\n\t\t\"runs\": [\n" +
@@ -110,10 +127,10 @@ std::size_t write_ioh_export(const StudyIndex& index, const fs::path& dir) {
                 "},\n\t\"attributes\": [\"evaluations\", \"raw_y\"],\n\t\"scenarios\": [\n" + scenarios +
                 "\n\t]\n}\n";
             write_file_atomically(folder / ("IOHprofiler_f" + id + "_" + name + ".json"), json);
-            ++files;
+            ++summary.files;
         }
     }
-    return files;
+    return summary;
 }
 
 } // namespace mhb

@@ -8,15 +8,26 @@
 // mhbench recorded them (end of each iteration and the evaluation checkpoints), so an improvement's
 // evaluation count is where it was recorded, which can be later than where it happened.
 // An algorithm is named by its display label, with its full spec in "info".
+// Non-finite values: the format has no inf (JSON has none; IOHanalyzer reads raw_y as numbers), so
+// a recorded point whose f is +inf (or -inf) is left out of the .dat, a run none of whose points is
+// finite (it ended at +inf) is left out of the export, and both are counted for the console; a
+// non-finite coordinate of best x is null in the JSON. Failed runs are never exported.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 
 #include "results/study_index.hpp"
 
 namespace mhb {
 
-// Writes the export under `dir`; returns the number of files written.
-std::size_t write_ioh_export(const StudyIndex& index, const std::filesystem::path& dir);
+struct IohExportSummary {
+    std::size_t files = 0;           // files written
+    std::size_t runs_left_out = 0;   // runs without a finite value (ended at +inf)
+    std::size_t points_left_out = 0; // non-finite points of the exported runs
+};
+
+// Writes the export under `dir`.
+IohExportSummary write_ioh_export(const StudyIndex& index, const std::filesystem::path& dir);
 
 } // namespace mhb

@@ -126,7 +126,7 @@ Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
             text_cell(index.label(a)),
             text_cell(std::to_string(g.runs.size()) + "/" + std::to_string(total_runs(g))),
             number_cell(mean(evaluations), 6), number_cell(s.mean), number_cell(s.std)};
-        row[3].bold = s.mean == best_mean;
+        row[3].bold = std::isfinite(best_mean) && s.mean == best_mean;
         if (const auto* f = published_fitness(p, a)) {
             row.push_back(number_cell(f->mean));
             row.push_back(number_cell(f->std));
@@ -138,11 +138,21 @@ Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
         row.push_back(optima.empty() ? empty_cell() : number_cell(mean(optima), 6));
         t.add_row(std::move(row));
     }
+    for (const auto& a : index.algorithms()) { // every run failed: a row that says so
+        const RunGroup* g = index.group(p.spec, a);
+        if (g == nullptr || !g->runs.empty())
+            continue;
+        std::vector<TableCell> row(t.header.size(), empty_cell());
+        row[0] = text_cell(index.label(a));
+        row[1] = text_cell("0/" + std::to_string(g->failed));
+        row[3] = text_cell("no successful run (" + std::to_string(g->failed) + " failed)");
+        t.add_row(std::move(row));
+    }
     t.caption = "Final best fitness over " + runs_note(index, p.spec) +
                 " (mean, sample std); lowest mean in bold. f* is the exact least-squares optimum of the "
                 "problem; the gap f - f* is what an optimiser could still gain. Paper values: " +
                 std::string(paper_citation) + (p.published ? ", " + std::string(p.published->table) : "") +
-                paper_rows_note + ".";
+                paper_rows_note + "." + left_out_notes(index);
     return t;
 }
 
@@ -233,7 +243,7 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
         "theta*) / theta*, and Overall is the mean over runs of the RMS relative distance to theta* in %. "
         "Paper values: " +
         std::string(paper_citation) + (p.published ? ", " + std::string(p.published->table) : "") +
-        " (its errors are magnitudes)" + paper_rows_note + ".";
+        " (its errors are magnitudes)" + paper_rows_note + "." + left_out_notes(index);
     return t;
 }
 

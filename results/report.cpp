@@ -1,7 +1,9 @@
 #include "results/report.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
+#include <sys/wait.h>
 
 #include "results/comparison_tables.hpp"
 #include "results/critical_difference.hpp"
@@ -35,6 +37,8 @@ void check_options(const ReportOptions& options) {
     for (const auto& f : options.formats)
         if (f != "md" && f != "tex" && f != "csv")
             throw std::invalid_argument("--format: '" + f + "' is not one of md, tex, csv");
+    if (options.errors == nullptr)
+        throw std::logic_error("ReportOptions::errors is null");
 }
 
 std::string latex_document(const std::vector<Table>& tables) {
@@ -44,6 +48,24 @@ std::string latex_document(const std::vector<Table>& tables) {
     for (const auto& t : tables)
         out += render_latex(t) + "\n";
     return out + "\\end{document}\n";
+}
+
+std::string read_if_exists(const fs::path& path) {
+    std::error_code ec;
+    return fs::exists(path, ec) ? read_whole_file(path) : std::string();
+}
+
+std::vector<std::string> non_empty_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        std::string line = text.substr(start, end - start);
+        if (line.find_first_not_of(" \t\r") != std::string::npos)
+            lines.push_back(std::move(line));
+        start = end + 1;
+    }
+    return lines;
 }
 
 void draw_figures(const ReportOptions& options, const fs::path& out_dir, std::ostream& console) {
@@ -61,11 +83,44 @@ void draw_figures(const ReportOptions& options, const fs::path& out_dir, std::os
         console << "figures skipped: no Python with matplotlib found; " << how << '\n';
         return;
     }
+    // The script's output is collected, not passed through: its notes (what a figure left out) go to
+    // the console, a figure that failed is one line on `errors`, and a traceback stays in a log.
+    const fs::path figures = out_dir / "figures";
+    std::error_code ec;
+    fs::create_directories(figures, ec);
+    const fs::path out_file = figures / ".plot_study.stdout";
+    const fs::path err_file = figures / ".plot_study.stderr";
+    const fs::path log_file = figures / "plot_study.log";
     const std::string command = shell_quote(*python) + " " + shell_quote(options.plot_script.string()) + " " +
-                                shell_quote(out_dir.string());
-    if (std::system(command.c_str()) != 0)
-        throw std::runtime_error("the plotting script failed: " + command);
-    console << "figures: " << (out_dir / "figures").string() << '\n';
+                                shell_quote(out_dir.string()) + " >" + shell_quote(out_file.string()) +
+                                " 2>" + shell_quote(err_file.string());
+    const int status = std::system(command.c_str());
+    const std::string out_text = read_if_exists(out_file);
+    const std::string err_text = read_if_exists(err_file);
+    fs::remove(out_file, ec);
+    fs::remove(err_file, ec);
+    fs::remove(log_file, ec); // a stale log from an earlier report would mislead
+    const bool succeeded = status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    for (const auto& line : non_empty_lines(out_text))
+        console << line << '\n';
+    if (!succeeded || !err_text.empty()) // keep everything the script said, traceback included
+        write_file_atomically(log_file, out_text + err_text);
+    std::ostream& errors = *options.errors;
+    if (!succeeded) {
+        const auto lines = non_empty_lines(err_text.empty() ? out_text : err_text);
+        std::string reason = lines.empty() ? std::string("no output") : lines.back();
+        if (status == -1 || !WIFEXITED(status))
+            reason = "the plotting script did not finish (" +
+                     (status != -1 && WIFSIGNALED(status) ? "signal " + std::to_string(WTERMSIG(status))
+                                                          : std::string("could not start")) +
+                     ")";
+        errors << "figures failed: " << reason << " (full output: " << log_file.string()
+               << "); the tables and curve data are written\n";
+        return;
+    }
+    for (const auto& line : non_empty_lines(err_text)) // the script's one line per figure that failed
+        errors << "figures: " << line << '\n';
+    console << "figures: " << figures.string() << '\n';
 }
 
 } // namespace
@@ -182,6 +237,16 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
             << count(index.problems().size(), "problem") << ", "
             << count(index.algorithms().size(), "algorithm") << "; reference "
             << index.label(comparison.reference) << '\n';
+    if (!index.failed().empty()) {
+        const RunRecord& first = *index.failed().front();
+        console << count(index.failed().size(), "failed run")
+                << " left out (first: " << run_name(index, first) << ": "
+                << (first.message.empty() ? std::string("no message") : first.message) << ")\n";
+    }
+    if (index.infinite_runs() > 0)
+        console << count(index.infinite_runs(), "run") << " ended at "
+                << (index.negative_infinite_runs() == 0 ? "+inf" : "+inf or -inf")
+                << ": the worst value in medians and rank tests, inf in means\n";
     for (const auto& d : designs)
         console << "factorial design " << d.design.description() << ": effects in effects.csv\n";
     for (const auto& r : rejected)
@@ -212,9 +277,22 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
     if (designs.empty()) // no effects table: stale copies from an earlier report would mislead
         for (const char* ext : {".md", ".tex", ".csv"})
             fs::remove(dir / (std::string("effects") + ext), ec);
-    const std::size_t ioh_files = write_ioh_export(index, dir / "ioh");
-    console << "tables and curve data: " << dir.string() << "\nIOHprofiler export (" << ioh_files
-            << " files, load the folder in IOHanalyzer): " << (dir / "ioh").string() << '\n';
+    const IohExportSummary ioh = write_ioh_export(index, dir / "ioh");
+    console << "tables and curve data: " << dir.string() << '\n';
+    if (ioh.files > 0)
+        console << "IOHprofiler export (" << ioh.files
+                << " files, load the folder in IOHanalyzer): " << (dir / "ioh").string() << '\n';
+    else
+        console << "IOHprofiler export: no run has a finite value to export\n";
+    if (ioh.runs_left_out > 0 || ioh.points_left_out > 0) {
+        console << "IOHprofiler export: left out";
+        if (ioh.runs_left_out > 0)
+            console << ' ' << count(ioh.runs_left_out, "run") << " that ended at +inf";
+        if (ioh.points_left_out > 0)
+            console << (ioh.runs_left_out > 0 ? " and " : " ") << count(ioh.points_left_out, "infinite value")
+                    << " of other runs";
+        console << " (the format has no inf)\n";
+    }
     if (options.figures)
         draw_figures(options, dir, console);
     return tables;

@@ -8,9 +8,14 @@
 // budget_slug), with budgets.csv, report.md and report.tex on top; a study with one budget keeps
 // the flat layout. Prints the Markdown tables to the console. The runner calls it at the end of
 // `mhbench run`.
+// Failed runs are left out of every statistic and +inf final values (legal: the worst) are kept;
+// the console summary, the captions and the figures say what was left out. Figures are a
+// convenience: a plotting script that fails is reported in one line on `errors` ("figures
+// failed: ...", its whole output kept in figures/plot_study.log) and the report still succeeds.
 #pragma once
 
 #include <filesystem>
+#include <iostream>
 #include <optional>
 #include <ostream>
 #include <set>
@@ -31,6 +36,8 @@ struct ReportOptions {
     std::filesystem::path plot_script; // scripts/plot_study.py; empty: figures are skipped
     // Interpreters tried in order; the first that can `import matplotlib` draws the figures.
     std::vector<std::string> python_candidates = {"/usr/bin/python3", "python3"};
+    // Where a failure of the figures is reported (one line each); never nullptr.
+    std::ostream* errors = &std::cerr;
 };
 
 // Checks the options (std::invalid_argument naming the option), then writes the report.

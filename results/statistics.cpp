@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace mhb {
@@ -18,6 +19,9 @@ double mean(const std::vector<double>& values) {
 double standard_deviation(const std::vector<double>& values) {
     if (values.size() < 2)
         return 0.0;
+    // (v - m) would be inf - inf = NaN: the spread of a sample with an infinite value is unbounded.
+    if (std::any_of(values.begin(), values.end(), [](double v) { return std::isinf(v); }))
+        return std::numeric_limits<double>::infinity();
     const double m = mean(values);
     // Two-pass with the compensating term (sum of deviations), which is exactly zero in exact
     // arithmetic and corrects the rounding of m.
@@ -39,7 +43,12 @@ double quantile_sorted(const std::vector<double>& sorted, double p) {
     const double h = (static_cast<double>(sorted.size()) - 1.0) * p;
     const auto lo = static_cast<std::size_t>(std::floor(h));
     const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
-    return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
+    const double fraction = h - static_cast<double>(lo);
+    // Equal neighbours (two +inf, say) or no fraction: the order statistic itself, since
+    // 0 * (inf - inf) would be NaN.
+    if (fraction == 0.0 || sorted[hi] == sorted[lo])
+        return sorted[lo];
+    return sorted[lo] + fraction * (sorted[hi] - sorted[lo]);
 }
 
 Summary summarize(const std::vector<double>& values) {
@@ -56,6 +65,8 @@ Summary summarize(const std::vector<double>& values) {
     s.q75 = quantile_sorted(sorted, 0.75);
     s.best = sorted.front();
     s.worst = sorted.back();
+    s.infinite = static_cast<std::size_t>(
+        std::count_if(values.begin(), values.end(), [](double v) { return std::isinf(v); }));
     return s;
 }
 

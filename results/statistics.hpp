@@ -1,6 +1,12 @@
 // Descriptive statistics of a sample of final values (per problem x algorithm): mean and std
 // (two-pass, so large offsets lose no precision), quantiles as R's default (type 7), and the
 // expected running time to a target as COCO defines it.
+//
+// Infinite values (+inf is a legal final value: the worst) are kept. The mean is then +inf (NaN
+// only for a sample holding both +inf and -inf), the standard deviation +inf (the spread is
+// unbounded); quantiles, best and worst are order statistics and treat +inf as the largest value,
+// as R's quantile() does (a quantile between a finite value and +inf is +inf; between two equal
+// infinities it is that infinity, never inf - inf).
 #pragma once
 
 #include <cstdint>
@@ -16,16 +22,19 @@ struct Summary {
     double median = 0.0;
     double q25 = 0.0;
     double q75 = 0.0;
-    double best = 0.0;  // minimum
-    double worst = 0.0; // maximum
-    [[nodiscard]] double iqr() const { return q75 - q25; }
+    double best = 0.0;        // minimum
+    double worst = 0.0;       // maximum
+    std::size_t infinite = 0; // values that are +inf or -inf
+    // q75 - q25; 0 when both quartiles are the same infinity (a tie, not inf - inf).
+    [[nodiscard]] double iqr() const { return q75 == q25 ? 0.0 : q75 - q25; }
 };
 
 // Throws std::invalid_argument on an empty sample.
 Summary summarize(const std::vector<double>& values);
 
 double mean(const std::vector<double>& values);
-// Sample standard deviation by the two-pass formula; 0 for fewer than two values.
+// Sample standard deviation by the two-pass formula; 0 for fewer than two values; +inf when a value
+// is infinite (and there are at least two values).
 double standard_deviation(const std::vector<double>& values);
 // Quantile of probability p in [0, 1], linear interpolation between order statistics
 // (Hyndman & Fan type 7, R's and NumPy's default). `sorted` must be sorted ascending.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <set>
 #include <stdexcept>
 
@@ -124,10 +125,13 @@ StudyIndex::StudyIndex(const StudyData& data, const std::optional<std::string>& 
             for (const auto* r : selected) {
                 if (r->problem != p || r->algorithm != a)
                     continue;
-                if (r->ok)
+                if (r->ok) {
                     group.runs.push_back(r);
-                else
+                    infinite_ += std::isinf(r->best_f) ? 1U : 0U;
+                    negative_infinite_ += std::isinf(r->best_f) && r->best_f < 0 ? 1U : 0U;
+                } else {
                     ++group.failed;
+                }
             }
             failed_ += group.failed;
             std::stable_sort(
@@ -136,6 +140,9 @@ StudyIndex::StudyIndex(const StudyData& data, const std::optional<std::string>& 
             if (!group.runs.empty() || group.failed > 0)
                 groups_.push_back(std::move(group));
         }
+    for (const auto* r : selected)
+        if (!r->ok)
+            failed_records_.push_back(r);
     for (const auto& p : problems_) {
         std::map<std::int64_t, std::uint64_t> seed_of_index;
         std::set<std::string> algorithms;
@@ -155,6 +162,13 @@ const RunGroup* StudyIndex::find(const std::string& problem, const std::string& 
     for (const auto& g : groups_)
         if (g.problem == problem && g.algorithm == algorithm)
             return g.runs.empty() ? nullptr : &g;
+    return nullptr;
+}
+
+const RunGroup* StudyIndex::group(const std::string& problem, const std::string& algorithm) const {
+    for (const auto& g : groups_)
+        if (g.problem == problem && g.algorithm == algorithm)
+            return &g;
     return nullptr;
 }
 
@@ -179,6 +193,44 @@ std::string StudyIndex::full_spec(const std::string& algorithm) const {
 bool StudyIndex::paired(const std::string& problem) const {
     const auto it = paired_.find(problem);
     return it != paired_.end() && it->second;
+}
+
+std::string run_name(const StudyIndex& index, const RunRecord& run) {
+    return run.problem + ", " + index.label(run.algorithm) + ", run " + std::to_string(run.run_index);
+}
+
+std::string failed_runs_note(const StudyIndex& index) {
+    const auto& failed = index.failed();
+    if (failed.empty())
+        return "";
+    std::string message = failed.front()->message.empty() ? "no message" : failed.front()->message;
+    constexpr std::size_t longest = 200; // a caption quotes the reason, not a whole dump
+    if (message.size() > longest)
+        message = message.substr(0, longest) + "...";
+    return std::to_string(failed.size()) + (failed.size() == 1 ? " failed run" : " failed runs") +
+           " left out of every statistic (first: " + run_name(index, *failed.front()) + ": " + message + ").";
+}
+
+std::string infinite_runs_note(const StudyIndex& index) {
+    const std::size_t n = index.infinite_runs();
+    if (n == 0)
+        return "";
+    const std::size_t negative = index.negative_infinite_runs();
+    const std::string where = negative == 0 ? "+inf" : negative == n ? "-inf" : "+inf or -inf";
+    return std::to_string(n) + (n == 1 ? " run" : " runs") + " ended at " + where +
+           (negative == 0 ? ": the worst value in medians, quartiles and rank-based tests; a mean or std "
+                            "over such a run is inf."
+                          : ": ranked last (+inf) or first (-inf) in medians, quartiles and rank-based "
+                            "tests; a mean or std over such a run is infinite (undefined where +inf and "
+                            "-inf meet).");
+}
+
+std::string left_out_notes(const StudyIndex& index) {
+    std::string out;
+    for (const auto& note : {failed_runs_note(index), infinite_runs_note(index)})
+        if (!note.empty())
+            out += " " + note;
+    return out;
 }
 
 } // namespace mhb

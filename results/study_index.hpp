@@ -53,6 +53,17 @@ struct PairedValues {
 };
 PairedValues paired_final_values(const RunGroup& x, const RunGroup& y);
 
+class StudyIndex;
+// One run of a report in a sentence: "sphere:dim=2, pso, run 3".
+std::string run_name(const StudyIndex& index, const RunRecord& run);
+// What every statistic left out or must warn about, for captions and the console, each a sentence
+// (empty when there is nothing to say): "2 failed runs left out of every statistic (first: sphere,
+// pso, run 3: the problem returned NaN at evaluation 12)." and "5 runs ended at +inf: ...".
+std::string failed_runs_note(const StudyIndex& index);
+std::string infinite_runs_note(const StudyIndex& index);
+// Both notes, each after a space: what a caption appends.
+std::string left_out_notes(const StudyIndex& index);
+
 class StudyIndex {
 public:
     // Indexes the runs of `budget`; without one, all runs, which must then share one budget
@@ -64,10 +75,19 @@ public:
     [[nodiscard]] const std::vector<std::string>& algorithms() const { return algorithms_; }
     // nullptr when the pair has no successful run.
     [[nodiscard]] const RunGroup* find(const std::string& problem, const std::string& algorithm) const;
+    // The pair's group even when every run of it failed (runs empty, failed > 0); nullptr when the
+    // pair never ran.
+    [[nodiscard]] const RunGroup* group(const std::string& problem, const std::string& algorithm) const;
     // Algorithms with at least one successful run on the problem, in study order.
     [[nodiscard]] std::vector<std::string> algorithms_on(const std::string& problem) const;
     [[nodiscard]] const std::vector<RunGroup>& groups() const { return groups_; }
     [[nodiscard]] std::size_t failed_runs() const { return failed_; }
+    // The failed runs (left out of every statistic), in run order.
+    [[nodiscard]] const std::vector<const RunRecord*>& failed() const { return failed_records_; }
+    // Successful runs whose final value is not finite (+inf: legal, the worst; -inf only where the
+    // problem has no finite minimum).
+    [[nodiscard]] std::size_t infinite_runs() const { return infinite_; }
+    [[nodiscard]] std::size_t negative_infinite_runs() const { return negative_infinite_; }
 
     // The display label and the full spec (every parameter, defaults included) of an algorithm
     // spec, from algorithms.csv; the spec itself for studies without that file.
@@ -85,6 +105,9 @@ private:
     std::vector<std::string> algorithms_;
     std::vector<RunGroup> groups_;
     std::size_t failed_ = 0;
+    std::vector<const RunRecord*> failed_records_;
+    std::size_t infinite_ = 0;
+    std::size_t negative_infinite_ = 0;
     std::map<std::string, std::string> labels_;
     std::map<std::string, std::string> full_specs_;
     std::map<std::string, bool> paired_;

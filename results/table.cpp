@@ -60,7 +60,14 @@ std::string render_markdown(const Table& table) {
 
 std::string latex_escape(const std::string& text) {
     std::string out;
-    for (char c : text) {
+    const std::string dash = undefined_text;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text.compare(i, dash.size(), dash) == 0) { // the em dash, without relying on inputenc
+            out += "---";
+            i += dash.size() - 1;
+            continue;
+        }
+        const char c = text[i];
         switch (c) {
         case '\\':
             out += "\\textbackslash{}";
@@ -182,7 +189,9 @@ std::string render_csv(const Table& table) {
     for (const auto& row : table.rows) {
         for (std::size_t c = 0; c < row.size(); ++c)
             out.append(c == 0 ? "" : ",")
-                .append(csv_field(row[c].value.empty() ? row[c].text : row[c].value));
+                .append(row[c].value.empty() && row[c].text == undefined_text
+                            ? std::string()
+                            : csv_field(row[c].value.empty() ? row[c].text : row[c].value));
         out += "\n";
     }
     return out;
@@ -190,7 +199,7 @@ std::string render_csv(const Table& table) {
 
 std::string format_number(double value, int significant) {
     if (std::isnan(value))
-        return "nan";
+        return undefined_text;
     if (std::isinf(value))
         return value > 0 ? "inf" : "-inf";
     char buffer[64];
@@ -207,7 +216,8 @@ std::string format_fixed(double value, int decimals) {
 }
 
 TableCell number_cell(double value, int significant) {
-    return {format_number(value, significant), csv_number(value), false};
+    // An undefined value: the dash, written to CSV as an empty field (render_csv).
+    return {format_number(value, significant), std::isnan(value) ? "" : csv_number(value), false};
 }
 
 TableCell text_cell(std::string text) {

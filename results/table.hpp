@@ -31,8 +31,12 @@ std::string render_csv(const Table& table);
 // Escapes the characters LaTeX treats specially in text mode.
 std::string latex_escape(const std::string& text);
 
-// Number formatting shared by the report: `significant` significant digits ("%.*g"), with "nan"
-// and "inf" spelled out; and full precision for CSV.
+// What a cell shows for an undefined value (a NaN, e.g. the mean of +inf and -inf), since no table
+// prints "nan": an em dash in Markdown, "---" in LaTeX, an empty field in CSV.
+inline constexpr const char* undefined_text = "\u2014";
+
+// Number formatting shared by the report: `significant` significant digits ("%.*g"), "inf" and
+// "-inf" spelled out, undefined_text for NaN; and full precision for CSV.
 std::string format_number(double value, int significant = 5);
 std::string format_fixed(double value, int decimals);
 TableCell number_cell(double value, int significant = 5);
