@@ -13,62 +13,9 @@
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
+#include "runner/points_reader.hpp"
 
 namespace mhb::cli {
-namespace {
-
-struct PointLine {
-    std::size_t line = 0;
-    Eigen::VectorXd x;
-};
-
-// One point a line, coordinates separated by spaces, tabs or commas; blank lines and lines
-// starting with '#' are skipped. Any bad text is a std::runtime_error naming file, line, column.
-std::vector<PointLine> read_points(std::istream& in, const std::string& file, Eigen::Index dimension) {
-    std::vector<PointLine> points;
-    std::string text;
-    std::size_t line = 0;
-    while (std::getline(in, text)) {
-        ++line;
-        if (!text.empty() && text.back() == '\r')
-            text.pop_back();
-        const auto first = text.find_first_not_of(" \t,");
-        if (first == std::string::npos || text[first] == '#')
-            continue;
-        const std::string where = file + ", line " + std::to_string(line);
-        std::vector<double> values;
-        std::size_t i = 0;
-        while (i < text.size()) {
-            while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == ','))
-                ++i;
-            if (i >= text.size())
-                break;
-            std::size_t j = i;
-            while (j < text.size() && text[j] != ' ' && text[j] != '\t' && text[j] != ',')
-                ++j;
-            const std::string token = text.substr(i, j - i);
-            double v = 0.0;
-            if (!parse_real(token, v))
-                throw std::runtime_error(where + ", column " + std::to_string(i + 1) + " (coordinate " +
-                                         std::to_string(values.size() + 1) + "): '" + token +
-                                         "' is not a finite number");
-            values.push_back(v);
-            i = j;
-        }
-        if (static_cast<Eigen::Index>(values.size()) != dimension)
-            throw std::runtime_error(where + ": " + std::to_string(values.size()) +
-                                     " coordinates, but the problem has " + std::to_string(dimension) +
-                                     " dimensions");
-        PointLine p;
-        p.line = line;
-        p.x = Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
-        points.push_back(std::move(p));
-    }
-    return points;
-}
-
-} // namespace
-
 int run_eval_command(const std::vector<std::string>& args) {
     namespace po = boost::program_options;
     po::options_description options("mhbench eval: f at given points, one value a line at full precision\n\n"
