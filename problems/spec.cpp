@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "problems/text_excerpt.hpp"
+
 namespace mhb {
 namespace {
 
@@ -11,7 +13,9 @@ bool is_name_char(char c) {
            c == '-' || c == '.';
 }
 
-std::string_view trim(std::string_view s) {
+} // namespace
+
+std::string_view trim_blanks(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
         s.remove_prefix(1);
     while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
@@ -19,38 +23,36 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-} // namespace
-
 Spec Spec::parse(std::string_view text) {
     const std::string_view original = text;
-    text = trim(text);
+    text = trim_blanks(text);
     const auto fail = [&](const std::string& why) {
-        throw std::invalid_argument("'" + std::string(original) + "': " + why);
+        throw std::invalid_argument(quoted_excerpt(original) + ": " + why);
     };
     Spec spec;
     const auto colon = text.find(':');
-    spec.name = std::string(trim(text.substr(0, colon)));
+    spec.name = std::string(trim_blanks(text.substr(0, colon)));
     if (spec.name.empty())
         fail("a name is missing (write name:key=value,...)");
     if (!std::all_of(spec.name.begin(), spec.name.end(), is_name_char))
-        fail("name '" + spec.name + "' may only hold letters, digits, '_', '-' and '.'");
+        fail("name " + quoted_excerpt(spec.name) + " may only hold letters, digits, '_', '-' and '.'");
     if (colon == std::string_view::npos)
         return spec;
     std::string_view rest = text.substr(colon + 1);
     while (true) {
         const auto comma = rest.find(',');
-        const std::string_view item = trim(rest.substr(0, comma));
+        const std::string_view item = trim_blanks(rest.substr(0, comma));
         const auto eq = item.find('=');
         if (eq == std::string_view::npos)
-            fail(std::string(item) + " is not key=value"); // (a quoted prefix trips GCC 12's -Wrestrict)
-        std::string key(trim(item.substr(0, eq)));
-        std::string value(trim(item.substr(eq + 1)));
+            fail(value_excerpt(item) + " is not key=value");
+        std::string key(trim_blanks(item.substr(0, eq)));
+        std::string value(trim_blanks(item.substr(eq + 1)));
         if (key.empty())
-            fail("a key is empty in '" + std::string(item) + "'");
+            fail("a key is empty in " + quoted_excerpt(item));
         if (value.empty())
-            fail("parameter '" + key + "' has no value");
+            fail("parameter " + quoted_excerpt(key) + " has no value");
         if (spec.find(key) != nullptr)
-            fail("parameter '" + key + "' is given twice");
+            fail("parameter " + quoted_excerpt(key) + " is given twice");
         spec.parameters.emplace_back(std::move(key), std::move(value));
         if (comma == std::string_view::npos)
             break;

@@ -9,6 +9,9 @@
 
 namespace mhb {
 
+// `s` without the spaces and tabs at either end.
+std::string_view trim_blanks(std::string_view s);
+
 struct Spec {
     std::string name;
     // Key/value pairs in the order written; keys are unique.

@@ -3,16 +3,10 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "problems/spec.hpp"
+
 namespace mhb {
 namespace {
-
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
-        s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
-        s.remove_suffix(1);
-    return s;
-}
 
 // Splits at the commas that are not inside braces.
 std::vector<std::string_view> split_top_level(std::string_view text) {
@@ -36,7 +30,7 @@ std::vector<std::string_view> split_top_level(std::string_view text) {
 } // namespace
 
 std::vector<GridVariant> expand_grid(std::string_view text) {
-    const std::string shown(trim(text));
+    const std::string shown(trim_blanks(text));
     const auto fail = [&](const std::string& why) { throw std::invalid_argument("'" + shown + "': " + why); };
     // Braces must balance and never nest.
     int depth = 0;
@@ -63,13 +57,13 @@ std::vector<GridVariant> expand_grid(std::string_view text) {
     };
     std::vector<Item> items;
     for (const std::string_view raw : split_top_level(std::string_view(shown).substr(colon + 1))) {
-        const std::string_view item = trim(raw);
+        const std::string_view item = trim_blanks(raw);
         const auto eq = item.find('=');
         if (eq == std::string_view::npos || item.find('{') < eq)
             fail(std::string(item) + " is not key=value or key={a,b,...}");
         Item parsed;
-        parsed.key = std::string(trim(item.substr(0, eq)));
-        const std::string_view value = trim(item.substr(eq + 1));
+        parsed.key = std::string(trim_blanks(item.substr(0, eq)));
+        const std::string_view value = trim_blanks(item.substr(eq + 1));
         if (value.find('{') == std::string_view::npos) {
             parsed.values.emplace_back(value);
         } else {
@@ -77,10 +71,10 @@ std::vector<GridVariant> expand_grid(std::string_view text) {
                 fail("parameter '" + parsed.key + "': a set is written {a,b,...} and nothing else");
             parsed.braced = true;
             const std::string_view inside = value.substr(1, value.size() - 2);
-            if (trim(inside).empty())
+            if (trim_blanks(inside).empty())
                 fail("parameter '" + parsed.key + "': the set {} is empty");
             for (const std::string_view v : split_top_level(inside)) {
-                const std::string one(trim(v));
+                const std::string one(trim_blanks(v));
                 if (one.empty())
                     fail("parameter '" + parsed.key + "': the set has an empty value");
                 if (std::find(parsed.values.begin(), parsed.values.end(), one) != parsed.values.end())
