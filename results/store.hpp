@@ -41,6 +41,8 @@ struct StudyFiles {
     // Marks a directory as a mhbench study, so that --out never takes over a directory of the
     // user's own files; its text names the format.
     static constexpr const char* marker = ".mhbench-study";
+    // In a shard's directory (`mhbench run --shard i/n`): "shard = i/n".
+    static constexpr const char* shard = "shard.txt";
     static constexpr const char* journal = "journal.txt";
 };
 

@@ -7,6 +7,7 @@
 #include <oneapi/tbb/info.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/partitioner.h>
+#include <set>
 #include <stdexcept>
 #include <vector>
 
@@ -22,20 +23,30 @@ int resolve_thread_count(int threads) {
 
 RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const RunnerOptions& options) {
     RunnerOutcome outcome;
-    outcome.total = study.run_count();
-    // Ids in the journal that are not runs of this study would mean the writer was opened for
-    // another study; StudyWriter compares study.ini first, so this is a misuse.
+    std::vector<std::int64_t> wanted = options.run_ids.value_or(std::vector<std::int64_t>{});
+    if (!options.run_ids) {
+        wanted.resize(static_cast<std::size_t>(study.run_count()));
+        for (std::size_t i = 0; i < wanted.size(); ++i)
+            wanted[i] = static_cast<std::int64_t>(i);
+    }
+    outcome.total = static_cast<std::int64_t>(wanted.size());
+    // Ids in the journal that are not runs to do would mean the writer was opened for another
+    // study or shard; StudyWriter compares study.ini first (and the CLI shard.txt), so this is a misuse.
+    const std::set<std::int64_t> wanted_set(wanted.begin(), wanted.end());
     for (const std::int64_t id : writer.completed())
-        if (id < 0 || id >= outcome.total)
+        if (wanted_set.count(id) == 0)
             throw std::logic_error("run_study: the journal holds run " + std::to_string(id) +
-                                   ", which is not a run of this study");
+                                   ", which is not a run of this study or shard");
     outcome.resumed = static_cast<std::int64_t>(writer.completed().size());
 
     std::vector<std::int64_t> pending;
     pending.reserve(static_cast<std::size_t>(outcome.total - outcome.resumed));
-    for (std::int64_t id = 0; id < outcome.total; ++id)
+    for (const std::int64_t id : wanted) {
+        if (id < 0 || id >= study.run_count())
+            throw std::logic_error("run_study: run " + std::to_string(id) + " is not a run of this study");
         if (writer.completed().count(id) == 0)
             pending.push_back(id);
+    }
 
     const auto stopping = [&] { return options.stop != nullptr && options.stop->load(); };
     std::mutex progress_mutex;

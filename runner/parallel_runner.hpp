@@ -11,6 +11,8 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
+#include <vector>
 
 #include "results/store.hpp"
 #include "runner/study.hpp"
@@ -20,6 +22,8 @@ namespace mhb {
 struct RunnerOptions {
     int threads = 0;                         // 0: every hardware thread
     const std::atomic<bool>* stop = nullptr; // may be set from a signal handler
+    // The runs to do (a shard of the study, possibly none); unset: every run of the study.
+    std::optional<std::vector<std::int64_t>> run_ids;
     // Called after each run is journaled, with the runs now kept, the study's total and the
     // evaluations that run spent. Calls are serialised (never two at once), but may come from any
     // worker thread.
@@ -27,7 +31,7 @@ struct RunnerOptions {
 };
 
 struct RunnerOutcome {
-    std::int64_t total = 0;   // runs in the study
+    std::int64_t total = 0;   // runs to do: the study's, or the shard's
     std::int64_t resumed = 0; // found already finished in the journal
     std::int64_t kept = 0;    // finished and journaled, resumed ones included
     bool interrupted = false; // stopped before all runs were done (the study is not finished)

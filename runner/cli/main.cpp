@@ -20,6 +20,7 @@ int run_report_command(const std::vector<std::string>& args);
 int run_simulate_command(const std::vector<std::string>& args);
 int run_identify_command(const std::vector<std::string>& args);
 int run_eval_command(const std::vector<std::string>& args);
+int run_merge_command(const std::vector<std::string>& args);
 
 namespace {
 
@@ -32,6 +33,7 @@ const std::vector<Command>& commands() {
         {"identify", "least-squares Rs, Ld, Lq, psi with standard errors from a dataset CSV",
          run_identify_command},
         {"eval", "print f at given points (check a function by hand)", run_eval_command},
+        {"merge", "join the shard directories of one study (mhbench run --shard i/n) into one", run_merge_command},
     };
     return table;
 }

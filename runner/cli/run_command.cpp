@@ -26,6 +26,7 @@
 #include "runner/context.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/progress.hpp"
+#include "runner/shards.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
 #include "runner/study_options.hpp"
@@ -92,6 +93,10 @@ po::options_description make_options() {
         ("dry-run", po::bool_switch(),
          "print the expanded study (algorithms with their labels, problems, budgets, runs, evaluations and a "
          "time estimate from a short calibration) and run nothing")
+        ("shard", po::value<std::string>(),
+         "i/n: run only shard i of n of the study (a deterministic share, balanced by estimated cost) into "
+         "--out; `mhbench merge OUT DIR...` joins the n shard directories into the study one process writes "
+         "(see scripts/slurm-array.sh)")
         ("threads", po::value<int>(), "worker threads (default: all hardware threads); results do not depend on it")
         ("out", po::value<std::string>(), "study directory (default: studies/<preset name, or 'study'>)")
         ("overwrite", po::bool_switch(), "replace a finished study (or another study's unfinished one) in --out")
@@ -284,6 +289,14 @@ int run_run_command(const std::vector<std::string>& args) {
         if (threads < 1)
             errors.push_back("threads = " + std::to_string(threads) + " is outside [1, inf)");
     }
+    std::optional<ShardSpec> shard;
+    if (vm.count("shard") != 0) {
+        try {
+            shard = parse_shard(vm["shard"].as<std::string>());
+        } catch (const std::invalid_argument& e) {
+            errors.emplace_back(e.what());
+        }
+    }
     Study study;
     std::string name;
     const bool base_read = load_base_study(vm, study, name, errors);
@@ -321,10 +334,33 @@ int run_run_command(const std::vector<std::string>& args) {
     }
     std::vector<std::string> command_line{"mhbench", "run"};
     command_line.insert(command_line.end(), args.begin(), args.end());
+    // A shard's directory says which shard it holds, so that an unfinished one is resumed only as
+    // the same shard, and `mhbench merge` can check the set.
+    const std::string shard_line = shard ? "shard = " + shard_text(*shard) + "\n" : "";
+    const std::filesystem::path shard_file = dir / StudyFiles::shard;
+    if (!vm["overwrite"].as<bool>() && std::filesystem::exists(dir / StudyFiles::journal)) {
+        const std::string previous = std::filesystem::exists(shard_file) ? read_whole_file(shard_file) : "";
+        if (previous != shard_line) {
+            const auto what = [](const std::string& line) {
+                return line.empty() ? std::string("the whole study")
+                                    : "shard " + line.substr(8, line.size() - 9);
+            };
+            std::cerr << "mhbench run: " << dir.string() << ": holds an unfinished run of " << what(previous)
+                      << ", not of " << what(shard_line) << "; choose another --out or pass --overwrite\n";
+            return exit_failure;
+        }
+    }
+    std::optional<std::vector<std::int64_t>> shard_runs;
+    if (shard)
+        shard_runs = shard_run_ids(*prepared, shard->count)[static_cast<std::size_t>(shard->index - 1)];
     // From here on Ctrl-C means "stop after the runs under way"; before, it just ends the process.
     const StopSignals signals;
     StudyWriter writer(dir, study_ini(prepared->study), context_ini(threads, command_line),
                        prepared->parameter_columns, vm["overwrite"].as<bool>(), prepared->algorithms);
+    if (shard)
+        write_file_atomically(shard_file, shard_line);
+    else
+        std::filesystem::remove(shard_file);
 
     const bool quiet = vm["quiet"].as<bool>();
     const bool forced = vm["progress"].as<bool>();
@@ -334,11 +370,13 @@ int run_run_command(const std::vector<std::string>& args) {
     shown.terminal = forced || stderr_is_terminal();
     shown.delay_seconds = forced ? 0.0 : 1.0;
     shown.line_interval = vm["progress-interval"].as<double>();
-    ProgressBar progress(std::cerr, prepared->run_count(),
-                         static_cast<std::int64_t>(writer.completed().size()), shown);
+    const std::int64_t to_do =
+        shard_runs ? static_cast<std::int64_t>(shard_runs->size()) : prepared->run_count();
+    ProgressBar progress(std::cerr, to_do, static_cast<std::int64_t>(writer.completed().size()), shown);
     RunnerOptions runner;
     runner.threads = threads;
     runner.stop = &stop_requested;
+    runner.run_ids = shard_runs;
     if (!quiet)
         runner.on_run_finished = [&progress](std::int64_t kept, std::int64_t, std::int64_t evaluations) {
             progress.update(kept, evaluations);
@@ -356,8 +394,14 @@ int run_run_command(const std::vector<std::string>& args) {
     }
     const StudyData data = load_study(dir);
     const auto [failed, total] = report_outcome(data, outcome, wall.count(), quiet);
-    if (failed == total) // nothing to report on, and nothing a script should take for a result
+    if (failed == total && total > 0) // nothing to report on, and nothing a script should take for a result
         return exit_failure;
+    if (shard) { // a shard is part of a study: its report comes after the merge
+        if (!quiet)
+            std::cout << "shard " << shard_text(*shard) << " done; when all " << shard->count
+                      << " are, join them with: mhbench merge OUT DIR...\n";
+        return exit_ok;
+    }
     if (vm["no-report"].as<bool>())
         return exit_ok;
     // The report is built from the directory alone, exactly as `mhbench report DIR` would.

@@ -1,0 +1,170 @@
+// `mhbench merge OUT DIR...`: joins the directories of the shards of one study
+// (`mhbench run --shard i/n`) into the directory one process would have written — the records
+// byte for byte — and builds its report. Every shard is checked first: finished, of the same
+// study, each of 1..n exactly once, holding exactly the runs its index is given.
+#include <boost/program_options.hpp>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "results/csv.hpp"
+#include "results/report.hpp"
+#include "results/store.hpp"
+#include "runner/cli/command.hpp"
+#include "runner/cli/parse_command_line.hpp"
+#include "runner/context.hpp"
+#include "runner/parallel_runner.hpp"
+#include "runner/shards.hpp"
+#include "runner/study.hpp"
+#include "runner/study_file.hpp"
+
+namespace mhb::cli {
+
+namespace po = boost::program_options;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Shard {
+    fs::path dir;
+    ShardSpec spec;
+    StudyData data;
+};
+
+// Reads and checks one shard directory; std::runtime_error naming it when it is not a shard.
+Shard read_shard(const fs::path& dir) {
+    if (!fs::exists(dir / StudyFiles::shard))
+        throw std::runtime_error(dir.string() + ": is not a shard (no " + StudyFiles::shard +
+                                 "); mhbench merge joins the directories of mhbench run --shard i/n");
+    Shard s;
+    s.dir = dir;
+    std::string line = read_whole_file(dir / StudyFiles::shard);
+    if (line.rfind("shard = ", 0) != 0 || line.empty() || line.back() != '\n')
+        throw std::runtime_error((dir / StudyFiles::shard).string() + ": is not 'shard = i/n'");
+    try {
+        s.spec = parse_shard(std::string_view(line).substr(8, line.size() - 9));
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error((dir / StudyFiles::shard).string() + ": " + e.what());
+    }
+    s.data = load_study(dir); // says so when the shard is unfinished
+    return s;
+}
+
+} // namespace
+
+int run_merge_command(const std::vector<std::string>& args) {
+    po::options_description visible(
+        "Usage: mhbench merge OUT DIR... [options]\n\n"
+        "Joins the n shard directories of one study (each made by mhbench run --shard i/n --out DIR)\n"
+        "into the study directory OUT, with the records one process would have written, byte for\n"
+        "byte, then builds its report. The shards must all be finished, of the same study, and be\n"
+        "shards 1..n each exactly once.\n\nOptions");
+    visible.add_options()("help,h", "this text")("overwrite", po::bool_switch(), "replace a study in OUT")(
+        "threads", po::value<int>()->default_value(0), "recorded in context.ini (merging uses one)")(
+        "no-report", po::bool_switch(), "do not build the report")(
+        "no-figures", po::bool_switch(), "build the report without figures")("quiet,q", po::bool_switch(),
+                                                                             "print nothing but errors");
+    po::options_description hidden;
+    hidden.add_options()("dirs", po::value<std::vector<std::string>>()->multitoken());
+    po::options_description all;
+    all.add(visible).add(hidden);
+    po::positional_options_description positional;
+    positional.add("dirs", -1);
+    po::variables_map vm;
+    if (!parse_command_line(
+            args, all, vm, [&] { std::cout << visible << '\n'; }, &positional))
+        return exit_ok;
+    const auto dirs =
+        vm.count("dirs") ? vm["dirs"].as<std::vector<std::string>>() : std::vector<std::string>{};
+    if (dirs.size() < 2) {
+        std::cerr << "mhbench merge: give the output directory and at least one shard directory "
+                     "(mhbench merge OUT DIR...; see --help)\n";
+        return exit_usage;
+    }
+    const fs::path out = dirs.front();
+
+    std::vector<Shard> shards;
+    for (std::size_t i = 1; i < dirs.size(); ++i)
+        shards.push_back(read_shard(dirs[i]));
+    // One study, one shard count, each index once, none missing.
+    std::vector<std::string> errors;
+    const Shard& first = shards.front();
+    std::map<int, const Shard*> by_index;
+    for (const Shard& s : shards) {
+        if (s.data.study_text != first.data.study_text)
+            errors.push_back(s.dir.string() + ": holds another study than " + first.dir.string() +
+                             " (their study.ini differ)");
+        else if (s.spec.count != first.spec.count)
+            errors.push_back(s.dir.string() + ": is shard " + shard_text(s.spec) + " of " +
+                             std::to_string(s.spec.count) + ", but " + first.dir.string() + " is one of " +
+                             std::to_string(first.spec.count));
+        else if (const auto seen = by_index.find(s.spec.index); seen != by_index.end())
+            errors.push_back("shard " + shard_text(s.spec) +
+                             " is given twice: " + seen->second->dir.string() + " and " + s.dir.string());
+        else
+            by_index[s.spec.index] = &s;
+    }
+    if (errors.empty()) {
+        std::string missing;
+        for (int i = 1; i <= first.spec.count; ++i)
+            if (by_index.count(i) == 0)
+                missing += (missing.empty() ? "" : ", ") + shard_text({i, first.spec.count});
+        if (!missing.empty())
+            errors.push_back("shard" + std::string(missing.find(',') == std::string::npos ? " " : "s ") +
+                             missing + (missing.find(',') == std::string::npos ? " is" : " are") +
+                             " missing");
+    }
+    if (!errors.empty()) {
+        for (const auto& e : errors)
+            std::cerr << "mhbench merge: " << e << '\n';
+        return exit_failure;
+    }
+
+    // The study itself, to check that each shard holds exactly the runs its index is given.
+    const PreparedStudy prepared = prepare_study(parse_study_ini(first.data.study_text, "study.ini"));
+    const auto expected = shard_run_ids(prepared, first.spec.count);
+    for (const auto& [index, shard] : by_index) {
+        std::vector<std::int64_t> ids;
+        for (const auto& r : shard->data.runs)
+            ids.push_back(r.run_id);
+        if (ids != expected[static_cast<std::size_t>(index - 1)]) {
+            std::cerr << "mhbench merge: " << shard->dir.string() << ": holds " << ids.size()
+                      << " runs, not the " << expected[static_cast<std::size_t>(index - 1)].size()
+                      << " runs of shard " << shard_text(shard->spec)
+                      << " (was it run by another mhbench version?)\n";
+            return exit_failure;
+        }
+    }
+
+    std::vector<std::string> command_line{"mhbench", "merge"};
+    command_line.insert(command_line.end(), args.begin(), args.end());
+    std::string context =
+        context_ini(vm["threads"].as<int>() > 0 ? vm["threads"].as<int>() : 1, command_line);
+    context += "merged_from =";
+    for (const auto& [index, shard] : by_index)
+        context += " " + shard->dir.string();
+    context += "\nshards = " + std::to_string(first.spec.count) + '\n';
+    StudyWriter writer(out, first.data.study_text, context, prepared.parameter_columns,
+                       vm["overwrite"].as<bool>(), prepared.algorithms);
+    for (const auto& [index, shard] : by_index)
+        for (const auto& record : shard->data.runs) {
+            const auto wall = shard->data.wall_seconds.find(record.run_id);
+            writer.append(record, wall == shard->data.wall_seconds.end() ? 0.0 : wall->second);
+        }
+    writer.finish();
+    const bool quiet = vm["quiet"].as<bool>();
+    if (!quiet)
+        std::cout << "merged " << by_index.size() << " shards (" << prepared.run_count() << " runs) into "
+                  << out.string() << '\n';
+    if (vm["no-report"].as<bool>())
+        return exit_ok;
+    ReportOptions report;
+    report.figures = !vm["no-figures"].as<bool>();
+    report.plot_script = fs::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
+    std::ostringstream discarded;
+    build_report(load_study(out), report, quiet ? discarded : std::cout);
+    return exit_ok;
+}
+
+} // namespace mhb::cli

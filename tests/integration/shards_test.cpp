@@ -1,0 +1,156 @@
+// Job arrays: `mhbench run --shard i/n` runs a deterministic, cost-balanced share of a study and
+// `mhbench merge` joins the shards into the directory one process writes, records byte for byte;
+// the merge refuses shards of different studies, duplicates, missing and unfinished shards.
+#include <filesystem>
+#include <fstream>
+
+#include "cli_harness.hpp"
+#include "runner/shards.hpp"
+#include "runner/study.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+using mhb::testing_cli::read_text;
+using mhb::testing_cli::run_mhbench;
+
+const std::string study_options =
+    "--algorithms 'itlbo:obl={on,off} tlbo cmaes' --problems 'pmsm sphere:dim={3,8}' "
+    "--budget iterations=5 --budget evaluations=400 --runs 3 --quiet ";
+
+fs::path fresh(const std::string& name) {
+    const fs::path dir = mhb::testing_cli::scratch_directory() / ("shards_" + name);
+    fs::remove_all(dir);
+    return dir;
+}
+
+TEST(Shards, ThreeShardsMergedAreTheStudyOneProcessWritesByteForByte) {
+    const fs::path one = fresh("one");
+    ASSERT_EQ(run_mhbench("run " + study_options + "--no-report --threads 2 --out " + one.string()).exit_code,
+              0);
+    std::vector<fs::path> shards;
+    for (int i = 1; i <= 3; ++i) {
+        shards.push_back(fresh("part" + std::to_string(i)));
+        const auto r = run_mhbench("run " + study_options + "--threads 1 --shard " + std::to_string(i) +
+                                   "/3 --out " + shards.back().string());
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_EQ(read_text(shards.back() / "shard.txt"), "shard = " + std::to_string(i) + "/3\n");
+        EXPECT_FALSE(fs::exists(shards.back() / "report")); // a shard is part of a study
+    }
+    const fs::path merged = fresh("merged");
+    // Any order of the shard directories.
+    const auto r = run_mhbench("merge " + merged.string() + " " + shards[2].string() + " " +
+                               shards[0].string() + " " + shards[1].string() + " --no-figures --quiet");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* file :
+         {"runs.csv", "curves.csv", "checkpoints.csv", "trajectories.csv", "study.ini", "algorithms.csv"})
+        EXPECT_EQ(read_text(merged / file), read_text(one / file)) << file;
+    EXPECT_TRUE(fs::exists(merged / "report"));
+    EXPECT_NE(read_text(merged / "context.ini").find("shards = 3\n"), std::string::npos);
+}
+
+TEST(Shards, TheSplitIsDeterministicCompleteAndBalancedByCost) {
+    mhb::Study s;
+    s.algorithms = {"itlbo", "pso"}; // ITLBO spends about (D + 1) times PSO's evaluations per iteration
+    s.problems = {"sphere:dim={2,20}"};
+    s.runs = 10;
+    s.budgets = {mhb::parse_budget("iterations=20")};
+    const mhb::PreparedStudy p = mhb::prepare_study(s);
+    const auto shards = mhb::shard_run_ids(p, 4);
+    EXPECT_EQ(shards, mhb::shard_run_ids(p, 4)); // the same on every machine
+    std::vector<std::int64_t> all;
+    for (const auto& shard : shards)
+        all.insert(all.end(), shard.begin(), shard.end());
+    std::sort(all.begin(), all.end());
+    ASSERT_EQ(all.size(), 40u);
+    for (std::int64_t i = 0; i < 40; ++i)
+        EXPECT_EQ(all[static_cast<std::size_t>(i)], i);
+    // Balanced by cost, not by count: the expensive ITLBO runs at D = 20 are spread out.
+    const auto cost = mhb::estimated_run_costs(p);
+    double largest = 0;
+    std::vector<double> totals;
+    for (const auto& shard : shards) {
+        double total = 0;
+        for (const auto id : shard) {
+            total += cost[static_cast<std::size_t>(id)];
+            largest = std::max(largest, cost[static_cast<std::size_t>(id)]);
+        }
+        totals.push_back(total);
+    }
+    EXPECT_LE(*std::max_element(totals.begin(), totals.end()) -
+                  *std::min_element(totals.begin(), totals.end()),
+              largest);
+    EXPECT_EQ(mhb::shard_run_ids(p, 50).size(), 50u); // more shards than runs: some are empty
+    EXPECT_THROW((void)mhb::parse_shard("0/3"), std::invalid_argument);
+    EXPECT_THROW((void)mhb::parse_shard("4/3"), std::invalid_argument);
+    EXPECT_THROW((void)mhb::parse_shard("1-3"), std::invalid_argument);
+}
+
+TEST(Shards, MergeRefusesOtherStudiesDuplicatesMissingAndUnfinishedShards) {
+    std::vector<fs::path> shards;
+    for (int i = 1; i <= 2; ++i) {
+        shards.push_back(fresh("pair" + std::to_string(i)));
+        ASSERT_EQ(run_mhbench("run " + study_options + "--shard " + std::to_string(i) + "/2 --out " +
+                              shards.back().string())
+                      .exit_code,
+                  0);
+    }
+    const fs::path other = fresh("other");
+    ASSERT_EQ(run_mhbench("run " + study_options + "--seed 2 --shard 2/2 --out " + other.string()).exit_code,
+              0);
+    const fs::path whole = fresh("whole");
+    ASSERT_EQ(run_mhbench("run " + study_options + "--no-report --out " + whole.string()).exit_code, 0);
+    const auto merge = [&](const std::string& dirs) {
+        return run_mhbench("merge " + fresh("out").string() + " " + dirs);
+    };
+    const std::string a = shards[0].string();
+    const std::string b = shards[1].string();
+    EXPECT_EQ(merge(a + " " + other.string()).err, "mhbench merge: " + other.string() +
+                                                       ": holds another study than " + a +
+                                                       " (their study.ini differ)\n");
+    EXPECT_EQ(merge(a + " " + a + " " + b).err,
+              "mhbench merge: shard 1/2 is given twice: " + a + " and " + a + "\n");
+    EXPECT_EQ(merge(b).err, "mhbench merge: shard 1/2 is missing\n");
+    EXPECT_EQ(merge(a + " " + whole.string()).err, "mhbench merge: " + whole.string() +
+                                                       ": is not a shard (no shard.txt); mhbench merge joins "
+                                                       "the directories of mhbench run --shard i/n\n");
+    EXPECT_EQ(merge(a).exit_code, 1);
+    EXPECT_FALSE(fs::exists(fresh("out") / "runs.csv"));
+    // An unfinished shard (its runs.csv gone, a journal left) is named as such.
+    fs::rename(shards[1] / "runs.csv", shards[1] / "journal.txt");
+    const auto unfinished = merge(a + " " + b);
+    EXPECT_EQ(unfinished.exit_code, 1);
+    EXPECT_NE(unfinished.err.find(b + ": holds an unfinished study"), std::string::npos) << unfinished.err;
+    // Resuming a shard directory as another shard (or as the whole study) is refused.
+    const auto wrong = run_mhbench("run " + study_options + "--shard 1/2 --out " + b);
+    EXPECT_EQ(wrong.exit_code, 1);
+    EXPECT_EQ(wrong.err, "mhbench run: " + b +
+                             ": holds an unfinished run of shard 2/2, not of shard 1/2; choose "
+                             "another --out or pass --overwrite\n");
+}
+
+} // namespace
+
+namespace {
+
+TEST(Shards, TheSlurmExampleRunsEveryTaskAndMerges) {
+    const fs::path dir = fresh("slurm");
+    fs::create_directories(dir);
+    std::ofstream(dir / "study.ini") << "algorithms = tlbo pso\nproblems = sphere:dim=3\nruns = 5\nbudget = "
+                                        "iterations=5\n";
+    const std::string script = std::string(MHB_SOURCE_DIR) + "/scripts/slurm-array.sh";
+    const std::string env = "MHBENCH='" + std::string(MHB_CLI_PATH) + "' SLURM_ARRAY_TASK_COUNT=2 ";
+    for (int i = 1; i <= 2; ++i) {
+        const auto r = mhb::testing_cli::run_shell("cd '" + dir.string() + "' && " + env +
+                                                   "SLURM_ARRAY_TASK_ID=" + std::to_string(i) + " bash '" +
+                                                   script + "' study.ini out");
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    const auto merged =
+        mhb::testing_cli::run_shell("cd '" + dir.string() + "' && MHBENCH='" + std::string(MHB_CLI_PATH) +
+                                    "' bash '" + script + "' --merge 2 out");
+    ASSERT_EQ(merged.exit_code, 0) << merged.err;
+    EXPECT_TRUE(fs::exists(dir / "out" / "runs.csv"));
+    EXPECT_NE(merged.out.find("merged 2 shards (10 runs)"), std::string::npos) << merged.out;
+}
+
+} // namespace
