@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages mhbench needs, if any are missing (as root, or through sudo).
 # Every dependency comes from Debian: nothing is downloaded at build time.
+# Optional groups are named as arguments: `setup-debian.sh fuzz` adds clang and libFuzzer.
 set -euo pipefail
 
 packages=(
@@ -14,6 +15,17 @@ packages=(
     libbenchmark-dev                     # Google Benchmark
     python3-matplotlib                   # figures (Debian's /usr/bin/python3)
 )
+optional_fuzz=(clang libclang-rt-dev)    # scripts/fuzz.sh: clang with libFuzzer and its sanitizers
+
+for group in "$@"; do
+    case "$group" in
+    fuzz) packages+=("${optional_fuzz[@]}") ;;
+    *)
+        echo "mhbench set-up: unknown optional group '$group' (known: fuzz)" >&2
+        exit 2
+        ;;
+    esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
