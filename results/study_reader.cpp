@@ -95,8 +95,9 @@ StudyData load_study(const fs::path& dir) {
         if (r.ok)
             r.best_f = runs.number(row, col("best_f"));
         r.f_opt = runs.optional_number(row, col("f_opt"));
-        if (const auto e = runs.optional_number(row, col("evals_to_target")))
-            r.evaluations_to_target = static_cast<std::int64_t>(*e);
+        // Written as an integer; read as one, so that no text (1e300, nan) becomes a cast out of range.
+        if (!runs.rows[row][col("evals_to_target")].empty())
+            r.evaluations_to_target = runs.integer(row, col("evals_to_target"));
         r.best_x = split_numbers(runs, row, col("best_x"));
         bool all_truths = true;
         bool all_optima = true;

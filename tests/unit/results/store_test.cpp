@@ -156,6 +156,39 @@ TEST(Store, DamagedDirectoriesGiveErrorsNamingTheFile) {
     EXPECT_THROW(load_study(dir / "nope"), std::runtime_error);
 }
 
+// Found by tests/fuzz/fuzz_study_dir: evals_to_target was read as a double and cast, so 1e300 or nan
+// was undefined behaviour (a garbage count, or a UBSan report) rather than an error naming the cell.
+TEST(Store, EvaluationsToTargetIsReadAsAnInteger) {
+    const fs::path dir = fresh_dir("evals_to_target");
+    {
+        StudyWriter w(dir, "s\n", "", {}, false);
+        RunRecord r = make_record(0);
+        r.evaluations_to_target = 1234;
+        w.append(r, 0.1);
+        w.finish();
+    }
+    ASSERT_EQ(load_study(dir).runs.at(0).evaluations_to_target, std::int64_t{1234});
+    const fs::path runs = dir / StudyFiles::runs;
+    std::string text;
+    {
+        std::ifstream in(runs);
+        text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    for (const std::string bad : {"1e300", "nan", "12.5"}) {
+        const auto at = text.find(",1234,");
+        ASSERT_NE(at, std::string::npos);
+        std::string damaged = text;
+        damaged.replace(at + 1, 4, bad);
+        std::ofstream(runs, std::ios::trunc) << damaged;
+        try {
+            (void)load_study(dir);
+            ADD_FAILURE() << bad << " was read";
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find("evals_to_target"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(Store, UnwritableOutputIsAClearError) {
     try {
         StudyWriter w("/proc/mhbench_cannot_write_here", "s\n", "", {}, false);
