@@ -132,12 +132,17 @@ public:
                     if (hi < lo)
                         throw std::invalid_argument(spec.name + ": parameter '" + key + "' = " + value +
                                                     " is an empty range");
-                    if (hi - lo >= 100000)
+                    // The width in unsigned arithmetic, and a loop that stops at hi without passing
+                    // it: ranges near the ends of long long must not overflow.
+                    if (static_cast<unsigned long long>(hi) - static_cast<unsigned long long>(lo) >= 100000)
                         throw std::invalid_argument(spec.name + ": parameter '" + key + "' = " + value +
                                                     " is too long a range");
                     values.clear();
-                    for (long long v = lo; v <= hi; ++v)
+                    for (long long v = lo;; ++v) {
                         values.push_back(std::to_string(v));
+                        if (v == hi)
+                            break;
+                    }
                 }
             }
             std::vector<Spec> next;

@@ -87,5 +87,17 @@ TEST(Registry, ExpandsRangesOfRangedIntegers) {
     EXPECT_THROW((void)r.expand(Spec::parse("toy:f=5-3")), std::invalid_argument);
 }
 
+// Found by tests/fuzz/fuzz_spec: the width of a range overflowed long long (so a range of 2^64
+// values passed the length check) and a range ending at the largest long long never ended.
+TEST(Registry, RangesAtTheEndsOfLongLongNeitherOverflowNorLoop) {
+    ProblemRegistry r("problem");
+    r.add({"toy", "", "", {ParameterInfo::integer("f", 1, 1, 24, "function").ranged()}, nullptr});
+    EXPECT_THROW((void)r.expand(Spec::parse("toy:f=-9223372036854775807-9223372036854775807")),
+                 std::invalid_argument);
+    const auto top = r.expand(Spec::parse("toy:f=9223372036854775805-9223372036854775807"));
+    ASSERT_EQ(top.size(), 3u);
+    EXPECT_EQ(top[2].canonical(), "toy:f=9223372036854775807");
+}
+
 } // namespace
 } // namespace mhb
