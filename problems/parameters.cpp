@@ -2,7 +2,10 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+
+#include "problems/text_excerpt.hpp"
 
 namespace mhb {
 
@@ -70,6 +73,12 @@ std::string bound_text(double v, bool integer) {
     return format_real(v);
 }
 
+long long integer_bound(double v) {
+    if (std::isnan(v) || v >= 9.2e18)
+        return std::numeric_limits<long long>::max();
+    return v <= -9.2e18 ? std::numeric_limits<long long>::min() : static_cast<long long>(v);
+}
+
 bool within(const ParameterInfo& p, double v) {
     const bool above = p.min_open ? v > p.min : v >= p.min;
     const bool below = p.max_open ? v < p.max : v <= p.max;
@@ -124,6 +133,22 @@ bool parse_integer(std::string_view text, long long& out) {
         return true;
     }
     return false;
+}
+
+std::string integer_refusal(std::string_view text, long long min, long long max) {
+    double d = 0;
+    if (parse_real(text, d) && d == std::floor(d)) { // integral, but too far out for an integer
+        if (d > 0)
+            return "is too large (at most " + std::to_string(max) + ")";
+        return "is too small (at least " + std::to_string(min) + ")";
+    }
+    // Digits only, and more of them than an integer holds (parse_real refuses beyond 1.8e308).
+    const std::string_view digits =
+        !text.empty() && (text.front() == '-' || text.front() == '+') ? text.substr(1) : text;
+    if (!digits.empty() && digits.find_first_not_of("0123456789") == std::string_view::npos)
+        return text.front() == '-' ? "is too small (at least " + std::to_string(min) + ")"
+                                   : "is too large (at most " + std::to_string(max) + ")";
+    return "is not an integer";
 }
 
 bool parse_boolean(std::string_view text, bool& out) {
@@ -226,11 +251,11 @@ ParameterValues validate_parameters(std::string_view component, const std::vecto
             std::string known;
             for (const auto& d : declared)
                 known += (known.empty() ? "" : ", ") + d.name;
-            errors.push_back(std::string(component) + ": unknown parameter '" + key +
-                             "'; known: " + (known.empty() ? "none" : known));
+            errors.push_back(std::string(component) + ": unknown parameter " + quoted_excerpt(key) +
+                             "; known: " + (known.empty() ? "none" : known));
             continue;
         }
-        const std::string shown = prefix + key + "' = " + value;
+        const std::string shown = prefix + key + "' = " + value_excerpt(value);
         switch (info->kind) {
         case ParameterKind::real: {
             double v = 0;
@@ -243,7 +268,8 @@ ParameterValues validate_parameters(std::string_view component, const std::vecto
         case ParameterKind::integer: {
             long long v = 0;
             if (!parse_integer(value, v))
-                errors.push_back(shown + " is not an integer");
+                errors.push_back(shown + " " +
+                                 integer_refusal(value, integer_bound(info->min), integer_bound(info->max)));
             else if (!within(*info, static_cast<double>(v)))
                 errors.push_back(shown + " is outside " + info->allowed());
             break;

@@ -92,6 +92,11 @@ bool parse_real(std::string_view text, double& out);
 bool parse_integer(std::string_view text, long long& out);
 bool parse_boolean(std::string_view text, bool& out);
 
+// Why parse_integer refused `text`, for a value allowed in [min, max]: "is too large (at most
+// max)" for an integral number beyond what an integer holds (1e300), "is too small (at least
+// min)" below it, else "is not an integer".
+std::string integer_refusal(std::string_view text, long long min, long long max);
+
 // A double written as the shortest text that reads back to the same value.
 std::string format_real(double value);
 

@@ -7,6 +7,7 @@
 
 #include "problems/parameters.hpp"
 #include "problems/spec_grid.hpp"
+#include "problems/text_excerpt.hpp"
 
 namespace mhb {
 namespace po = boost::program_options;
@@ -50,7 +51,7 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
                               std::vector<std::string>& errors) {
     const std::string prefix = where.empty() ? "" : where + ": ";
     const auto fail = [&](const std::string& why) {
-        errors.push_back(prefix + key + " = " + value + " " + why);
+        errors.push_back(prefix + key + " = " + value_excerpt(value) + " " + why);
     };
     const bool is_list = key == "algorithms" || key == "algorithm" || key == "problems" || key == "problem" ||
                          key == "budget" || key == "budgets";
@@ -61,11 +62,7 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
     const auto read_integer = [&](long long max) -> std::optional<std::int64_t> {
         long long v = 0;
         if (!parse_integer(value, v)) {
-            double d = 0;
-            if (parse_real(value, d) && d == std::floor(d) && std::fabs(d) >= 9.0e15)
-                fail("is too large (at most " + std::to_string(max) + ")");
-            else
-                fail("is not an integer");
+            fail(integer_refusal(value, 1, max));
             return std::nullopt;
         }
         return v;
@@ -125,7 +122,7 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
         else
             target_ = v;
     } else {
-        errors.push_back(prefix + "unknown option '" + key + "'");
+        errors.push_back(prefix + "unknown option " + quoted_excerpt(key));
     }
 }
 
