@@ -1,8 +1,11 @@
 #include "problems/pmsm/dataset_csv.hpp"
 
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <ostream>
@@ -11,6 +14,7 @@
 #include <vector>
 
 #include "problems/parameters.hpp"
+#include "problems/text_excerpt.hpp"
 
 namespace mhb::pmsm {
 namespace {
@@ -18,6 +22,7 @@ namespace {
 // Column order of the rows as stored in Dataset; `injected` is the optional seventh.
 constexpr std::array<std::string_view, 7> column_names = {"t", "ud", "uq", "id", "iq", "omega", "injected"};
 constexpr std::size_t injected_column = 6;
+static_assert(max_dataset_magnitude == 1e9, "the messages below say [-1e9, 1e9]");
 
 std::string_view trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
@@ -58,21 +63,29 @@ std::string column_label(std::string_view name) {
     return "column '" + std::string(name) + "'";
 }
 
-// A finite number or a one-line reason why not.
+// A finite number within +-max_dataset_magnitude, or a one-line reason why not.
 double parse_cell(std::string_view text, std::size_t line, std::string_view column, const ErrorContext& ctx) {
     double v = 0;
-    if (parse_real(text, v))
+    if (parse_real(text, v)) {
+        if (std::fabs(v) > max_dataset_magnitude)
+            ctx.fail(line, column_label(column) + ": " + value_excerpt(text) + " is outside [-1e9, 1e9] (" +
+                               "the range of a dataset value; larger ones would overflow the fit)");
         return v;
+    }
     // from_chars reads "nan" and "inf"; name them as what they are.
     double raw = 0;
     std::string_view body = (!text.empty() && text.front() == '+') ? text.substr(1) : text;
     const auto [ptr, ec] = std::from_chars(body.data(), body.data() + body.size(), raw);
     if (ec == std::errc() && ptr == body.data() + body.size() && !std::isfinite(raw))
         ctx.fail(line,
-                 column_label(column) + ": '" + std::string(text) + "' is not finite (NaN or infinity)");
+                 column_label(column) + ": " + quoted_excerpt(text) + " is not finite (NaN or infinity)");
     if (text.empty())
         ctx.fail(line, column_label(column) + ": the field is empty");
-    ctx.fail(line, column_label(column) + ": '" + std::string(text) + "' is not a number");
+    // Beyond a double's range (1e400) from_chars fails too: say what the limit is.
+    if (ec == std::errc::result_out_of_range && ptr == body.data() + body.size())
+        ctx.fail(line, column_label(column) + ": " + value_excerpt(text) + " is outside [-1e9, 1e9] (" +
+                           "the range of a dataset value; larger ones would overflow the fit)");
+    ctx.fail(line, column_label(column) + ": " + quoted_excerpt(text) + " is not a number");
 }
 
 } // namespace
@@ -89,7 +102,9 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
 
     while (std::getline(in, line)) {
         ++line_number;
-        const std::string_view text = trim(line);
+        std::string_view text = trim(line);
+        if (line_number == 1 && text.substr(0, 3) == "\xEF\xBB\xBF") // a UTF-8 byte-order mark
+            text = trim(text.substr(3));
         if (text.empty())
             continue;
         if (text.front() == '#') {
@@ -101,9 +116,9 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
                 continue; // a plain comment
             const std::string key(trim(body.substr(0, eq)));
             if (key.empty())
-                ctx.fail(line_number, "metadata line '" + std::string(text) + "' has an empty key");
+                ctx.fail(line_number, "metadata line " + quoted_excerpt(text) + " has an empty key");
             if (data.find_metadata(key) != nullptr)
-                ctx.fail(line_number, "metadata key '" + key + "' is given twice");
+                ctx.fail(line_number, "metadata key " + quoted_excerpt(key) + " is given twice");
             data.metadata.emplace_back(key, std::string(trim(body.substr(eq + 1))));
             continue;
         }
@@ -118,12 +133,12 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
                     if (column_names[c] == name)
                         found = c;
                 if (found == column_names.size())
-                    ctx.fail(line_number, "column " + std::to_string(position + 1) + ": unknown column '" +
-                                              std::string(name) +
-                                              "' (expected t,ud,uq,id,iq,omega[,injected])");
+                    ctx.fail(line_number, "column " + std::to_string(position + 1) + ": unknown column " +
+                                              quoted_excerpt(name) +
+                                              " (expected t,ud,uq,id,iq,omega[,injected])");
                 if (seen[found])
-                    ctx.fail(line_number, "column " + std::to_string(position + 1) + ": column '" +
-                                              std::string(name) + "' appears twice");
+                    ctx.fail(line_number, "column " + std::to_string(position + 1) + ": column " +
+                                              quoted_excerpt(name) + " appears twice");
                 seen[found] = true;
                 layout.push_back(found);
             }
@@ -143,8 +158,8 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
             const std::size_t c = layout[position];
             if (c == injected_column) {
                 if (fields[position] != "0" && fields[position] != "1")
-                    ctx.fail(line_number, column_label("injected") + ": '" + std::string(fields[position]) +
-                                              "' is not 0 or 1");
+                    ctx.fail(line_number, column_label("injected") + ": " + quoted_excerpt(fields[position]) +
+                                              " is not 0 or 1");
                 row[c] = fields[position] == "1" ? 1.0 : 0.0;
             } else {
                 row[c] = parse_cell(fields[position], line_number, column_names[c], ctx);
@@ -155,7 +170,7 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
         data.push_back(row[0], row[1], row[2], row[3], row[4], row[5], injected);
     }
     if (in.bad())
-        ctx.fail_file("read error");
+        ctx.fail_file(std::string("read error (") + std::strerror(errno) + ")");
     if (header_line == 0)
         ctx.fail_file("no header line (expected t,ud,uq,id,iq,omega[,injected])");
     if (data.size() < options.min_rows)
@@ -174,9 +189,14 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
 }
 
 Dataset read_dataset_csv(const std::string& path, const DatasetReadOptions& options) {
-    std::ifstream in(path);
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw std::runtime_error(path + ": is a directory, not a dataset file");
+    errno = 0;
+    std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw std::runtime_error(path + ": cannot open the dataset file");
+        throw std::runtime_error(path + ": cannot open the dataset file (" +
+                                 (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
     return read_dataset_csv(in, path, options);
 }
 
@@ -191,13 +211,16 @@ void write_dataset_csv(std::ostream& out, const Dataset& data) {
 }
 
 void write_dataset_csv(const std::string& path, const Dataset& data) {
+    errno = 0;
     std::ofstream out(path);
     if (!out)
-        throw std::runtime_error(path + ": cannot open for writing");
+        throw std::runtime_error(path + ": cannot open for writing (" +
+                                 (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
     write_dataset_csv(out, data);
     out.flush();
     if (!out)
-        throw std::runtime_error(path + ": write failed");
+        throw std::runtime_error(path + ": write failed (" +
+                                 (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
 }
 
 } // namespace mhb::pmsm

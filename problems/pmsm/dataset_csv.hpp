@@ -4,7 +4,11 @@
 // when |id| exceeds a threshold (default 1 A, half the paper's -2 A injection).
 //
 // The reader checks everything and throws std::runtime_error naming the file, the line (row) and
-// the column, e.g. `drive.csv: line 57, column 'ud': 'abc' is not a number`.
+// the column, e.g. `drive.csv: line 57, column 'ud': 'abc' is not a number`. A UTF-8 byte-order
+// mark at the start is skipped; a cell is quoted in an error to at most 40 characters. Every
+// value must lie within +-max_dataset_magnitude: a drive's volts, amperes, rad/s and seconds are
+// far inside it, and the least squares square products of three values (omega i_q L), so 1e9 keeps
+// every sum of squares below 1e60, far from overflow; a file beyond it is damaged or in wrong units.
 #pragma once
 
 #include <iosfwd>
@@ -13,6 +17,8 @@
 #include "problems/pmsm/dataset.hpp"
 
 namespace mhb::pmsm {
+
+inline constexpr double max_dataset_magnitude = 1e9;
 
 struct DatasetReadOptions {
     double injection_threshold = 1.0; // A; used only when the file has no `injected` column

@@ -56,6 +56,9 @@ LeastSquaresResult solve_least_squares(const SteadyStateData& data, const Box* b
             "pmsm: the data (with these weights) do not determine all four parameters; "
             "both injection states need samples with non-zero weights");
     r.f = data.fitness(r.theta);
+    if (!r.theta.allFinite() || !std::isfinite(r.f))
+        throw std::invalid_argument("pmsm: the least-squares estimate is not finite: the data's values are "
+                                    "too large for double precision");
 
     // Covariance sigma^2 (A^T W A)^-1, through the column-scaled design for accuracy.
     Eigen::Vector4d scale;
@@ -67,6 +70,9 @@ LeastSquaresResult solve_least_squares(const SteadyStateData& data, const Box* b
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(As, Eigen::ComputeThinV);
     const Eigen::Vector4d sv = svd.singularValues();
     r.condition_number = sv[0] / sv[3];
+    if (!(sv[3] > 0) || !std::isfinite(r.condition_number))
+        throw std::invalid_argument("pmsm: the normal equations are singular (the data, with these weights, "
+                                    "do not determine all four parameters)");
     const Eigen::Matrix4d v = svd.matrixV();
     const Eigen::Matrix4d scaled_inverse = v * sv.cwiseInverse().cwiseAbs2().asDiagonal() * v.transpose();
     const Eigen::Matrix4d inverse =

@@ -36,7 +36,9 @@ struct LeastSquaresResult {
 };
 
 // Solves the weighted least squares of `data`; `box` (optional) is the search box. Throws
-// std::invalid_argument if the data do not determine all four parameters.
+// std::invalid_argument if the data do not determine all four parameters (singular normal
+// equations) or the estimate is not finite; theta, f and the condition number are then always
+// finite (the standard errors are NaN when m <= 4 equations leave no residual).
 LeastSquaresResult solve_least_squares(const SteadyStateData& data, const Box* box = nullptr);
 
 } // namespace mhb::pmsm

@@ -16,6 +16,7 @@
 #include "problems/pmsm/least_squares.hpp"
 #include "problems/pmsm/steady_state_data.hpp"
 #include "problems/pmsm/steady_state_problem.hpp"
+#include "problems/text_excerpt.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 
@@ -32,11 +33,12 @@ pmsm::FitnessWeights parse_weights(const std::string& text) {
     while (std::getline(in, cell, ',')) {
         double v = 0;
         if (!parse_real(cell, v) || v < 0)
-            throw std::invalid_argument("--weights '" + text + "': '" + cell + "' is not a number >= 0");
+            throw std::invalid_argument("--weights " + quoted_excerpt(text) + ": " + quoted_excerpt(cell) +
+                                        " is not a number >= 0");
         w.push_back(v);
     }
     if (w.size() != 4)
-        throw std::invalid_argument("--weights '" + text + "' needs four numbers w1,w2,w3,w4");
+        throw std::invalid_argument("--weights " + quoted_excerpt(text) + " needs four numbers w1,w2,w3,w4");
     return {w[0], w[1], w[2], w[3]};
 }
 
@@ -46,12 +48,21 @@ std::string line(const char* format, double a, double b, double c) {
     return buf;
 }
 
+// A percentage, or "n/a" (same width) where it has no value: an estimate or a true value of 0.
+std::string percent_text(double value, const char* format) {
+    if (!std::isfinite(value))
+        return "      n/a  ";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, value);
+    return buf;
+}
+
 } // namespace
 
 int run_identify_command(const std::vector<std::string>& args) {
     std::string data_path;
     std::string weights_text = "0.25,0.25,0.25,0.25";
-    double threshold = 1.0;
+    std::string threshold_text = "1";
     po::options_description options(
         "mhbench identify: estimate Rs, Ld, Lq and psi of a PMSM from steady-state dq data by exact\n"
         "least squares on the paper's fitness (Li, Wang and Ji 2017, eq. 11), with standard errors.\n"
@@ -65,7 +76,7 @@ int run_identify_command(const std::vector<std::string>& args) {
         ("data,d", po::value<std::string>(&data_path), "dataset CSV; required")
         ("weights", po::value<std::string>(&weights_text)->default_value(weights_text),
          "w1,w2,w3,w4 of eq. 11: d and q residuals of the id = 0 state, then of the injected state")
-        ("id-threshold", po::value<double>(&threshold)->default_value(1.0),
+        ("id-threshold", po::value<std::string>(&threshold_text)->default_value(threshold_text),
          "without an 'injected' column, |id| above this (A) marks the injected state");
     // clang-format on
     po::variables_map vm;
@@ -73,15 +84,33 @@ int run_identify_command(const std::vector<std::string>& args) {
         return exit_ok;
     if (data_path.empty())
         throw std::invalid_argument("--data FILE is required (see mhbench identify --help)");
-    if (!(threshold > 0))
-        throw std::invalid_argument("--id-threshold must be > 0");
+    double threshold = 0;
+    if (!parse_real(threshold_text, threshold) || !(threshold > 0))
+        throw std::invalid_argument("--id-threshold = " + value_excerpt(threshold_text) +
+                                    " is not a number > 0");
     const pmsm::FitnessWeights weights = parse_weights(weights_text);
 
     pmsm::DatasetReadOptions read_options;
     read_options.injection_threshold = threshold;
     const pmsm::Dataset data = pmsm::read_dataset_csv(data_path, read_options);
     const pmsm::SteadyStateData samples = pmsm::pair_samples(data, weights);
-    const pmsm::LeastSquaresResult r = pmsm::solve_least_squares(samples);
+    // Data that do not determine the parameters are failed work (exit 1), not a bad command line.
+    pmsm::LeastSquaresResult r;
+    try {
+        r = pmsm::solve_least_squares(samples);
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(data_path + ": " + e.what());
+    }
+    // Never print inf or nan as an estimate or a standard error: say why there is none.
+    if (!r.standard_error.allFinite()) {
+        if (r.equations <= 4)
+            throw std::runtime_error(data_path + ": " + std::to_string(r.equations) +
+                                     " equations for 4 parameters leave no residual to estimate the "
+                                     "standard errors from; give more samples in each state");
+        throw std::runtime_error(data_path + ": the standard errors are not finite (condition number " +
+                                 line("%.3g", r.condition_number, 0, 0) +
+                                 "): the data do not determine the four parameters");
+    }
     const auto truth = data.true_parameters();
     const auto [off, on] = data.state_counts();
 
@@ -98,13 +127,12 @@ int run_identify_command(const std::vector<std::string>& args) {
     out << '\n';
     for (int j = 0; j < 4; ++j) {
         char buf[240];
-        std::snprintf(buf, sizeof buf, "%s   %-14.8g  %-14.4g  %9.3g %%", names[j], r.theta[j],
-                      r.standard_error[j], 100.0 * r.standard_error[j] / std::fabs(r.theta[j]));
-        out << buf;
+        const double relative = 100.0 * r.standard_error[j] / std::fabs(r.theta[j]);
+        std::snprintf(buf, sizeof buf, "%s   %-14.8g  %-14.4g  ", names[j], r.theta[j], r.standard_error[j]);
+        out << buf << percent_text(relative, "%9.3g %%");
         if (truth) {
-            std::snprintf(buf, sizeof buf, "     %-14.8g  %+9.3g %%", (*truth)[j],
-                          100.0 * (r.theta[j] - (*truth)[j]) / (*truth)[j]);
-            out << buf;
+            std::snprintf(buf, sizeof buf, "     %-14.8g  ", (*truth)[j]);
+            out << buf << percent_text(100.0 * (r.theta[j] - (*truth)[j]) / (*truth)[j], "%+9.3g %%");
         }
         out << '\n';
     }
@@ -112,10 +140,12 @@ int run_identify_command(const std::vector<std::string>& args) {
         << line("f* (eq. 11 at the estimate) = %.10g;  residual RMS: d axis %.4g V, q axis %.4g V\n", r.f,
                 r.residual_rms_d, r.residual_rms_q);
     const double correlation = r.covariance(0, 3) / std::sqrt(r.covariance(0, 0) * r.covariance(3, 3));
-    out << line("%.0f equations, 4 parameters; condition number %.4g (columns scaled to unit norm); "
-                "correlation of Rs and psi %.3f\n",
-                static_cast<double>(r.equations), r.condition_number, correlation);
-    if (truth) {
+    out << line("%.0f equations, 4 parameters; condition number %.4g (columns scaled to unit norm); ",
+                static_cast<double>(r.equations), r.condition_number, 0)
+        << "correlation of Rs and psi "
+        << (std::isfinite(correlation) ? line("%.3f", correlation, 0, 0) : std::string("n/a (an exact fit)"))
+        << '\n';
+    if (truth && std::isfinite(samples.fitness(*truth))) {
         char buf[200];
         std::snprintf(buf, sizeof buf,
                       "f at the true values = %.10g (f - f* = %.4g: how far the data move the optimum)\n",
