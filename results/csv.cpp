@@ -1,10 +1,15 @@
 #include "results/csv.hpp"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace mhb {
 
@@ -169,30 +174,90 @@ CsvTable read_csv(const std::filesystem::path& path) {
 }
 
 std::string read_whole_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw std::runtime_error(path.string() + ": cannot be opened (missing?)");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
+    // POSIX calls, so that a failure says the OS's reason (errno), not a guess.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        throw std::runtime_error(path.string() + ": cannot be read (" + std::strerror(errno) + ")");
+    std::string content;
+    char buffer[65536];
+    while (true) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0) {
+            const int error = errno;
+            ::close(fd);
+            throw std::runtime_error(path.string() + ": cannot be read (" + std::strerror(error) + ")");
+        }
+        if (n == 0)
+            break;
+        content.append(buffer, static_cast<std::size_t>(n));
+    }
+    ::close(fd);
+    return content;
 }
 
+namespace {
+
+// Writes all of `content` to `fd`; false with errno set on failure.
+bool write_all(int fd, std::string_view content) {
+    while (!content.empty()) {
+        const ssize_t n = ::write(fd, content.data(), content.size());
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            if (n == 0)
+                errno = EIO;
+            return false;
+        }
+        content.remove_prefix(static_cast<std::size_t>(n));
+    }
+    return true;
+}
+
+} // namespace
+
 void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+    const auto fail = [&](int error) {
+        throw std::runtime_error(path.string() + ": cannot be written (" + std::strerror(error) + ")");
+    };
+    // An existing target that is not a regular file (a device such as /dev/stdout, a pipe) is
+    // written in place: renaming over it would replace the device itself.
+    struct stat status {};
+    if (::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode)) {
+        if (S_ISDIR(status.st_mode))
+            fail(EISDIR);
+        const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+        if (fd < 0)
+            fail(errno);
+        if (!write_all(fd, content)) {
+            const int error = errno;
+            ::close(fd);
+            fail(error);
+        }
+        if (::close(fd) != 0)
+            fail(errno);
+        return;
+    }
     std::filesystem::path temporary = path;
     temporary += ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out)
-            throw std::runtime_error(temporary.string() + ": cannot be written");
-        out.write(content.data(), static_cast<std::streamsize>(content.size()));
-        out.flush();
-        if (!out)
-            throw std::runtime_error(temporary.string() + ": writing failed (disk full?)");
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0)
+        fail(errno);
+    // From here on a failure removes the temporary file: nothing half-written is left behind.
+    const auto fail_and_remove = [&](int error) {
+        ::unlink(temporary.c_str());
+        fail(error);
+    };
+    if (!write_all(fd, content)) {
+        const int error = errno;
+        ::close(fd);
+        fail_and_remove(error);
     }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec)
-        throw std::runtime_error(path.string() + ": cannot be written (" + ec.message() + ")");
+    if (::close(fd) != 0) // NFS and some file systems report a full disk only here
+        fail_and_remove(errno);
+    if (::rename(temporary.c_str(), path.c_str()) != 0)
+        fail_and_remove(errno);
 }
 
 } // namespace mhb

@@ -1,6 +1,7 @@
 // `mhbench report DIR`: rebuilds every table, the curve data and the figures of a finished study
 // from its directory alone. Thin: parses the command line, loads the study, calls build_report.
 #include <boost/program_options.hpp>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -68,7 +69,21 @@ int run_report_command(const std::vector<std::string>& args) {
     }
     options.plot_script = std::filesystem::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
     const StudyData study = load_study(study_dir);
-    build_report(study, options, std::cout);
+    // A report that fails prints nothing and leaves no report folder it made (its files are each
+    // written whole, so a folder that existed holds whole files only).
+    const std::filesystem::path report_dir =
+        out_dir.empty() ? study.directory / "report" : std::filesystem::path(out_dir);
+    std::error_code ec;
+    const bool existed = std::filesystem::exists(report_dir, ec);
+    std::ostringstream printed;
+    try {
+        build_report(study, options, printed);
+    } catch (...) {
+        if (!existed)
+            std::filesystem::remove_all(report_dir, ec);
+        throw;
+    }
+    std::cout << printed.str();
     return exit_ok;
 }
 
