@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "problems/spec.hpp"
 
@@ -83,6 +84,13 @@ std::vector<GridVariant> expand_grid(std::string_view text) {
             }
         }
         items.push_back(std::move(parsed));
+    }
+    std::size_t count = 1;
+    for (const auto& item : items) {
+        count *= item.values.size(); // at most max_grid_variants times the text's length: no overflow
+        if (count > max_grid_variants)
+            fail("the grid has more than " + std::to_string(max_grid_variants) +
+                 " variants (the product of its sets' sizes)");
     }
 
     std::vector<GridVariant> out{GridVariant{name, {}}};

@@ -8,6 +8,7 @@
 // declare them (Registry::expand), and a braced value may itself be such a range.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -21,6 +22,10 @@ struct GridVariant {
     // of one grid apart (labels are made from it).
     std::vector<std::pair<std::string, std::string>> varying;
 };
+
+// The most variants one grid may have (the product of its sets' sizes), checked before any is
+// made: a line of a few dozen two-valued sets would otherwise ask for billions of specs.
+inline constexpr std::size_t max_grid_variants = 100000;
 
 // The variants of `text`; a text without braces is one variant with nothing varying.
 // Throws std::invalid_argument naming the text and the fault.

@@ -65,6 +65,24 @@ TEST(SpecGrid, RefusesNestedEmptyDuplicateAndUnbalancedSets) {
               "'pso:w=0.{4,5}': parameter 'w': a set is written {a,b,...} and nothing else");
 }
 
+// Found by tests/fuzz/fuzz_spec: 30 two-valued sets in 300 bytes asked for 2^30 variants and ran
+// out of memory; a grid's size is now checked before it is expanded.
+TEST(SpecGrid, RefusesGridsOfTooManyVariantsBeforeExpanding) {
+    std::string text = "pso:";
+    for (int i = 0; i < 30; ++i)
+        text += (i == 0 ? "" : ",") + std::string("k") + std::to_string(i) + "={0,1}";
+    try {
+        (void)expand_grid(text);
+        FAIL() << "a grid of 2^30 variants was expanded";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("more than 100000 variants"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(expand_grid("pso:a={1,2,3,4,5,6,7,8,9,10},b={1,2,3,4,5,6,7,8,9,10},c={1,2,3,4,5,6,7,8,9,10},"
+                          "d={1,2,3,4,5,6,7,8,9,10},e={1,2,3,4,5,6,7,8,9,10}")
+                  .size(),
+              max_grid_variants); // exactly the limit is allowed
+}
+
 TEST(SpecGrid, SpecListsKeepBracedSpacesTogether) {
     EXPECT_EQ(split_spec_list("  itlbo  tlbo\tpso:w={0.4, 0.5} de\n"),
               (std::vector<std::string>{"itlbo", "tlbo", "pso:w={0.4,0.5}", "de"}));
