@@ -13,6 +13,7 @@
 
 #include "problems/parameters.hpp"
 #include "problems/spec.hpp"
+#include "problems/text_excerpt.hpp"
 
 namespace mhb {
 
@@ -45,8 +46,8 @@ public:
         std::string known;
         for (const auto& e : entries_)
             known += (known.empty() ? "" : ", ") + e.name;
-        throw std::invalid_argument("unknown " + kind_ + " '" + std::string(name) +
-                                    "'; known: " + (known.empty() ? "none" : known));
+        throw std::invalid_argument("unknown " + kind_ + " " + quoted_excerpt(name) +
+                                    "; known: " + (known.empty() ? "none" : known));
     }
 
     [[nodiscard]] bool contains(std::string_view name) const {

@@ -36,7 +36,8 @@ void check_options(const ReportOptions& options) {
         throw std::invalid_argument("--format: choose at least one of md, tex, csv");
     for (const auto& f : options.formats)
         if (f != "md" && f != "tex" && f != "csv")
-            throw std::invalid_argument("--format: '" + f + "' is not one of md, tex, csv");
+            throw std::invalid_argument("--format: '" + (f.size() > 40 ? f.substr(0, 37) + "..." : f) +
+                                        "' is not one of md, tex, csv");
     if (options.errors == nullptr)
         throw std::logic_error("ReportOptions::errors is null");
 }

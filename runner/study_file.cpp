@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "problems/parameters.hpp"
+#include "problems/text_excerpt.hpp"
 #include "runner/study_options.hpp"
 
 namespace mhb {
@@ -85,11 +86,12 @@ void parse_study_file(std::string_view text, const std::string& origin, Study& s
     for (const auto& line : logical_lines(text)) {
         const std::string where = origin + ":" + std::to_string(line.number);
         if (line.text.front() == '[') {
-            errors.push_back(where + ": sections ('" + line.text + "') are not used in study files");
+            errors.push_back(where + ": sections (" + quoted_excerpt(line.text) +
+                             ") are not used in study files");
             continue;
         }
         if (line.text.find('=') == std::string::npos) {
-            errors.push_back(where + ": '" + line.text + "' is not key = value");
+            errors.push_back(where + ": " + quoted_excerpt(line.text) + " is not key = value");
             continue;
         }
         // Boost.Program_options reads the line (key, value, the option's name); one line at a
@@ -106,7 +108,7 @@ void parse_study_file(std::string_view text, const std::string& origin, Study& s
             for (const auto& o : options.options())
                 known += (known.empty() ? "" : ", ") + o->long_name();
             const bool run_only = key == "threads" || key == "out" || key == "overwrite" || key == "quiet";
-            errors.push_back(where + ": unknown key '" + key + "'" +
+            errors.push_back(where + ": unknown key " + quoted_excerpt(key) +
                              (run_only
                                   ? " (it is not part of a study: give --" + key + " on the command line)"
                                   : "; known: " + known));

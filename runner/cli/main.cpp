@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mhb_version.hpp"
+#include "problems/text_excerpt.hpp"
 #include "runner/cli/command.hpp"
 
 namespace mhb::cli {
@@ -33,7 +34,8 @@ const std::vector<Command>& commands() {
         {"identify", "least-squares Rs, Ld, Lq, psi with standard errors from a dataset CSV",
          run_identify_command},
         {"eval", "print f at given points (check a function by hand)", run_eval_command},
-        {"merge", "join the shard directories of one study (mhbench run --shard i/n) into one", run_merge_command},
+        {"merge", "join the shard directories of one study (mhbench run --shard i/n) into one",
+         run_merge_command},
     };
     return table;
 }
@@ -86,6 +88,7 @@ int main(int argc, char** argv) {
             return exit_failure;
         }
     }
-    std::cerr << "mhbench: unknown command '" << args[0] << "'; run mhbench --help for the list\n";
+    std::cerr << "mhbench: unknown command " << mhb::quoted_excerpt(args[0])
+              << "; run mhbench --help for the list\n";
     return exit_usage;
 }

@@ -17,6 +17,7 @@
 
 #include "problems/parameters.hpp"
 #include "problems/spec.hpp"
+#include "problems/text_excerpt.hpp"
 #include "results/csv.hpp"
 #include "results/report.hpp"
 #include "results/store.hpp"
@@ -97,7 +98,7 @@ po::options_description make_options() {
          "i/n: run only shard i of n of the study (a deterministic share, balanced by estimated cost) into "
          "--out; `mhbench merge OUT DIR...` joins the n shard directories into the study one process writes "
          "(see scripts/slurm-array.sh)")
-        ("threads", po::value<int>(), "worker threads (default: all hardware threads); results do not depend on it")
+        ("threads", po::value<std::string>(), "worker threads (default: all hardware threads); results do not depend on it")
         ("out", po::value<std::string>(), "study directory (default: studies/<preset name, or 'study'>)")
         ("overwrite", po::bool_switch(), "replace a finished study (or another study's unfinished one) in --out")
         ("progress", po::bool_switch(), "draw the progress bar even when stderr is not a terminal")
@@ -285,9 +286,15 @@ int run_run_command(const std::vector<std::string>& args) {
         errors.push_back("progress-interval = " + format_real(vm["progress-interval"].as<double>()) +
                          " is outside (0, inf)");
     if (vm.count("threads") != 0) {
-        threads = vm["threads"].as<int>();
-        if (threads < 1)
-            errors.push_back("threads = " + std::to_string(threads) + " is outside [1, inf)");
+        const std::string& text = vm["threads"].as<std::string>();
+        long long value = 0;
+        // Read as text so that a malformed or huge value gets our message, not Boost's "is invalid".
+        if (!parse_integer(text, value))
+            errors.push_back("threads = " + value_excerpt(text) + " " + integer_refusal(text, 1, 100000));
+        else if (value < 1)
+            errors.push_back("threads = " + std::to_string(value) + " is outside [1, inf)");
+        else
+            threads = static_cast<int>(std::min<long long>(value, 100000));
     }
     std::optional<ShardSpec> shard;
     if (vm.count("shard") != 0) {
