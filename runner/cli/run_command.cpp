@@ -21,10 +21,10 @@
 #include "results/csv.hpp"
 #include "results/report.hpp"
 #include "results/store.hpp"
-#include "runner/calibration.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/context.hpp"
+#include "runner/dry_run.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/progress.hpp"
 #include "runner/shards.hpp"
@@ -185,56 +185,6 @@ void apply_options(const po::variables_map& vm, Study& study, std::vector<std::s
     reader.finish(errors);
 }
 
-std::string count_text(double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, value < 1e6 ? "%.0f" : "%.3g", value);
-    return text;
-}
-
-// --dry-run: what the study is, what it costs, where it goes; nothing is run or written.
-void print_dry_run(const PreparedStudy& prepared, const std::filesystem::path& dir, int threads) {
-    const Study& s = prepared.study;
-    std::cout << "mhbench run --dry-run: nothing is run or written.\n\n"
-              << "study: " << prepared.optimizers.size() << " algorithms x " << prepared.problems.size()
-              << " problems x " << s.budgets.size() << " budget" << (s.budgets.size() == 1 ? "" : "s")
-              << " x " << s.runs << " runs = " << prepared.run_count() << " runs; seed " << s.seed
-              << ", seeds " << seed_mode_name(s.seeds)
-              << (s.seeds == SeedMode::common ? " (every algorithm starts run r from the same stream)\n"
-                                              : " (each algorithm its own streams)\n");
-    std::size_t width = 5;
-    for (const auto& a : prepared.algorithms)
-        width = std::max(width, a.label.size());
-    std::cout << "\nalgorithms (label, canonical spec):\n";
-    for (const auto& a : prepared.algorithms)
-        std::cout << "  " << a.label << std::string(width - a.label.size() + 2, ' ') << a.spec << '\n';
-    std::cout << "\nproblems (" << prepared.problem_specs.size() << "):\n";
-    const std::size_t shown = prepared.problem_specs.size() > 12 ? 10 : prepared.problem_specs.size();
-    for (std::size_t p = 0; p < shown; ++p)
-        std::cout << "  " << prepared.problem_specs[p] << '\n';
-    if (shown < prepared.problem_specs.size())
-        std::cout << "  ... and " << prepared.problem_specs.size() - shown << " more, to "
-                  << prepared.problem_specs.back() << '\n';
-    const StudyEstimate estimate = estimate_study(prepared);
-    std::cout << "\nbudgets:\n";
-    for (std::size_t b = 0; b < s.budgets.size(); ++b) {
-        const auto& e = estimate.budgets[b];
-        std::cout << "  " << prepared.budget_texts[b] << ": " << (e.exact ? "" : "about ")
-                  << count_text(e.evaluations) << " evaluations\n";
-    }
-    const double seconds = estimate.cpu_seconds() / std::max(threads, 1);
-    char line[160];
-    std::snprintf(line, sizeof line, "%s evaluations, roughly %.3g s on %d thread%s",
-                  count_text(estimate.evaluations()).c_str(), seconds, threads, threads == 1 ? "" : "s");
-    std::cout << "\ntotal: " << line << " (calibrated on " << estimate.calibration_runs << " short runs)\n";
-    std::cout << "output: " << dir.string();
-    if (std::filesystem::exists(dir / StudyFiles::runs))
-        std::cout << " (holds a finished study: the run needs --overwrite or another --out)\n";
-    else if (std::filesystem::exists(dir / StudyFiles::journal))
-        std::cout << " (holds an unfinished study: the run resumes it if it is this one)\n";
-    else
-        std::cout << '\n';
-}
-
 // The summary on stdout (unless quiet) and, whatever quiet says, failed runs on stderr: how many,
 // and the first messages. Returns the number of failed runs and the total.
 std::pair<std::int64_t, std::int64_t> report_outcome(const StudyData& data, const RunnerOutcome& outcome,
@@ -336,7 +286,7 @@ int run_run_command(const std::vector<std::string>& args) {
     threads = resolve_thread_count(threads);
     const std::filesystem::path dir = vm.count("out") != 0 ? vm["out"].as<std::string>() : "studies/" + name;
     if (vm["dry-run"].as<bool>()) {
-        print_dry_run(*prepared, dir, threads);
+        std::cout << dry_run_text(*prepared, dir, threads);
         return exit_ok;
     }
     std::vector<std::string> command_line{"mhbench", "run"};
