@@ -27,9 +27,9 @@ struct CheckpointSample {
 };
 
 struct RunRecord {
-    std::int64_t run_id = 0;    // position in the study's run list, 0-based
-    std::string algorithm;      // canonical spec, e.g. "itlbo:obl=off"
-    std::string problem;        // canonical spec, e.g. "pmsm:load=2,speed=2500"
+    std::int64_t run_id = 0; // position in the study's run list, 0-based
+    std::string algorithm;   // canonical spec, e.g. "itlbo:obl=off"
+    std::string problem;     // canonical spec, e.g. "pmsm:load=2,speed=2500"
     // The budget the run was given, as text: "iterations=150", "evaluations=15050",
     // "iterations=150,evaluations=20000", with ",target=1e-08" when a target was set. A study may
     // hold several budgets (a factor of its design); each is reported separately. Empty in

@@ -42,14 +42,15 @@ Study paper_study(std::vector<std::string> algorithms, std::int64_t runs = 3) {
 }
 
 TEST(StudyDesign, AGridIsEightLabelledVariantsInAFixedOrder) {
-    const PreparedStudy p = prepare_study(paper_study({"itlbo:tutorial={on,off},stepwise={on,off},obl={on,off}"}));
+    const PreparedStudy p =
+        prepare_study(paper_study({"itlbo:tutorial={on,off},stepwise={on,off},obl={on,off}"}));
     ASSERT_EQ(p.algorithms.size(), 8u);
     std::vector<std::string> labels;
     for (const auto& a : p.algorithms)
         labels.push_back(a.label);
-    EXPECT_EQ(labels, (std::vector<std::string>{"itlbo[T+S+O+]", "itlbo[T+S+O-]", "itlbo[T+S-O+]", "itlbo[T+S-O-]",
-                                                "itlbo[T-S+O+]", "itlbo[T-S+O-]", "itlbo[T-S-O+]",
-                                                "itlbo[T-S-O-]"}));
+    EXPECT_EQ(labels,
+              (std::vector<std::string>{"itlbo[T+S+O+]", "itlbo[T+S+O-]", "itlbo[T+S-O+]", "itlbo[T+S-O-]",
+                                        "itlbo[T-S+O+]", "itlbo[T-S+O-]", "itlbo[T-S-O+]", "itlbo[T-S-O-]"}));
     EXPECT_EQ(p.algorithms.front().spec, "itlbo"); // the paper's configuration: every default
     EXPECT_EQ(p.algorithms.back().spec, "itlbo:obl=off,stepwise=off,tutorial=off");
     EXPECT_NE(p.algorithms.back().full_spec.find("np=50"), std::string::npos);
@@ -58,7 +59,8 @@ TEST(StudyDesign, AGridIsEightLabelledVariantsInAFixedOrder) {
     EXPECT_NE(text.find("algorithms = itlbo:obl=off,label=itlbo[T+S+O-]\n"), std::string::npos) << text;
     EXPECT_EQ(study_ini(prepare_study(parse_study_ini(text, "study.ini")).study), text);
 
-    const PreparedStudy w = prepare_study(paper_study({"pso:w={0.4,0.5,0.7}", "de:F={0.5,0.9},CR={0.1,0.9}"}));
+    const PreparedStudy w =
+        prepare_study(paper_study({"pso:w={0.4,0.5,0.7}", "de:F={0.5,0.9},CR={0.1,0.9}"}));
     std::vector<std::string> more;
     for (const auto& a : w.algorithms)
         more.push_back(a.label);
@@ -75,24 +77,27 @@ TEST(StudyDesign, LabelsNameVariantsAndSameMeaningSpecsAreOneOptimiser) {
     EXPECT_EQ(p.algorithms[0].spec, "tlbo");
     EXPECT_EQ(p.algorithms[1].label, "pso:w=0.7");
     EXPECT_EQ(error_lines(paper_study({"tlbo", "tlbo:np=50"})),
-              (std::vector<std::string>{"algorithm 'tlbo:np=50' is the same optimiser as 'tlbo' (both are 'tlbo')"}));
+              (std::vector<std::string>{
+                  "algorithm 'tlbo:np=50' is the same optimiser as 'tlbo' (both are 'tlbo')"}));
     EXPECT_EQ(error_lines(paper_study({"tlbo:label=x", "pso:label=x"})),
               (std::vector<std::string>{"algorithm label 'x' names both 'tlbo' and 'pso'"}));
-    EXPECT_EQ(error_lines(paper_study({"pso:w={0.4,0.5},label=p"})),
-              (std::vector<std::string>{"pso: label 'p' would name all 2 variants of the grid; leave it out (each "
-                                        "variant gets a label of its own) or write the variants one by one"}));
+    EXPECT_EQ(
+        error_lines(paper_study({"pso:w={0.4,0.5},label=p"})),
+        (std::vector<std::string>{"pso: label 'p' would name all 2 variants of the grid; leave it out (each "
+                                  "variant gets a label of its own) or write the variants one by one"}));
     // The grid and the plain specs of the same variant are recognised as one.
     EXPECT_EQ(error_lines(paper_study({"itlbo:obl={on,off}", "itlbo:obl=false"})).size(), 1u);
     Study q = paper_study({"tlbo"});
     q.problems = {"sphere:dim=10", "sphere:dim=1e1"};
-    EXPECT_EQ(error_lines(q), (std::vector<std::string>{"problem 'sphere:dim=10' is the same problem as 'sphere:dim=10'"}));
+    EXPECT_EQ(error_lines(q),
+              (std::vector<std::string>{"problem 'sphere:dim=10' is the same problem as 'sphere:dim=10'"}));
 }
 
 TEST(StudyDesign, CommonRandomNumbersMakeItlboWithSwitchesOffTlboInsideAStudy) {
     for (const char* r : {"coordinate", "learner"}) {
         const std::string suffix = std::string(",r=") + r;
-        const PreparedStudy p = prepare_study(
-            paper_study({"itlbo:tutorial=off,stepwise=off,obl=off" + suffix, "tlbo:r=" + std::string(r), "pso"}));
+        const PreparedStudy p = prepare_study(paper_study(
+            {"itlbo:tutorial=off,stepwise=off,obl=off" + suffix, "tlbo:r=" + std::string(r), "pso"}));
         const auto a = static_cast<std::int64_t>(p.optimizers.size());
         for (std::int64_t pr = 0; pr < 2; ++pr)
             for (std::int64_t run = 0; run < p.study.runs; ++run) {
@@ -148,7 +153,8 @@ TEST(StudyDesign, BudgetsAreAFactorWithTheSameSeedsUnderEach) {
         EXPECT_EQ(execute_run(second).budget, "evaluations=1000,target=1e-08");
     }
     s.budgets.push_back(parse_budget("evaluations=1000,target=1e-8"));
-    EXPECT_EQ(error_lines(s), (std::vector<std::string>{"budget 'evaluations=1000,target=1e-08' is listed twice"}));
+    EXPECT_EQ(error_lines(s),
+              (std::vector<std::string>{"budget 'evaluations=1000,target=1e-08' is listed twice"}));
     EXPECT_THROW((void)parse_budget("target=1"), std::invalid_argument);
     EXPECT_THROW((void)parse_budget("iterations=0"), std::invalid_argument);
     EXPECT_THROW((void)parse_budget("iterations=5,speed=2"), std::invalid_argument);
@@ -191,25 +197,26 @@ TEST(StudyFileDesign, EveryErrorOfAFileIsReportedWithItsLine) {
                      "algorithms = pso:w=1.5 tlbo:np=1\n"
                      "problems = sphere:dim={2,2}\n",
                      "bad.ini", s, errors);
-    EXPECT_EQ(errors, (std::vector<std::string>{
-                          "bad.ini:1: runs = 0x10 is not an integer",
-                          "bad.ini:2: sections ('[study]') are not used in study files",
-                          "bad.ini:3: 'just words' is not key = value",
-                          "bad.ini:4: unknown key 'colour'; known: algorithms, algorithm, problems, problem, runs, "
-                          "seed, seeds, iterations, evaluations, budget, budgets, target",
-                          "bad.ini:5: unknown key 'out' (it is not part of a study: give --out on the command line)",
-                          "bad.ini:6: seeds = sometimes is not one of {common, per-algorithm}",
-                          "bad.ini:7: iterations = 1e300 is too large (at most 1000000000000000)",
-                          "bad.ini:8: 'runs' is given twice",
-                          "bad.ini:9: budget: parameter 'iterations' = -1 is outside [1, 1000000000000000]",
-                      }));
+    EXPECT_EQ(errors,
+              (std::vector<std::string>{
+                  "bad.ini:1: runs = 0x10 is not an integer",
+                  "bad.ini:2: sections ('[study]') are not used in study files",
+                  "bad.ini:3: 'just words' is not key = value",
+                  "bad.ini:4: unknown key 'colour'; known: algorithms, algorithm, problems, problem, runs, "
+                  "seed, seeds, iterations, evaluations, budget, budgets, target",
+                  "bad.ini:5: unknown key 'out' (it is not part of a study: give --out on the command line)",
+                  "bad.ini:6: seeds = sometimes is not one of {common, per-algorithm}",
+                  "bad.ini:7: iterations = 1e300 is too large (at most 1000000000000000)",
+                  "bad.ini:8: 'runs' is given twice",
+                  "bad.ini:9: budget: parameter 'iterations' = -1 is outside [1, 1000000000000000]",
+              }));
     // The specs' own errors come from prepare_study, each with the line it was written on.
-    EXPECT_EQ(error_lines(s),
-              (std::vector<std::string>{"bad.ini:10: pso: parameter 'w' = 1.5 is outside [0, 1]",
-                                        "bad.ini:10: tlbo: parameter 'np' = 1 is outside [2, 100000]",
-                                        "bad.ini:11: problem 'sphere:dim={2,2}': parameter 'dim': value '2' is "
-                                        "listed twice in the set",
-                                        "budget: give a number of iterations or of evaluations (or both)"}));
+    EXPECT_EQ(error_lines(s), (std::vector<std::string>{
+                                  "bad.ini:10: pso: parameter 'w' = 1.5 is outside [0, 1]",
+                                  "bad.ini:10: tlbo: parameter 'np' = 1 is outside [2, 100000]",
+                                  "bad.ini:11: problem 'sphere:dim={2,2}': parameter 'dim': value '2' is "
+                                  "listed twice in the set",
+                                  "budget: give a number of iterations or of evaluations (or both)"}));
 }
 
 TEST(StudyDesign, ShippedPresetsAreStudyFilesAndTheAblationIsTheFullFactorial) {

@@ -235,8 +235,9 @@ TEST(StudyFile, ReadsConfigSyntaxWithCommentsAndNamesTheKeyOfAnError) {
         }
         return std::string("no error");
     };
-    EXPECT_EQ(message("runs = 2\nthreads = 4\n"),
-              "f.ini:2: unknown key 'threads' (it is not part of a study: give --threads on the command line)");
+    EXPECT_EQ(
+        message("runs = 2\nthreads = 4\n"),
+        "f.ini:2: unknown key 'threads' (it is not part of a study: give --threads on the command line)");
     EXPECT_EQ(message("runs = two\n"), "f.ini:1: runs = two is not an integer");
     EXPECT_EQ(message("seed = -1\n"), "f.ini:1: seed = -1 is not an integer in [0, 2^64)");
     EXPECT_EQ(message("iterations = 3\niterations = 4\n"), "f.ini:2: 'iterations' is given twice");
