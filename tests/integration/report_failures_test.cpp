@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <limits>
-#include <regex>
 #include <string>
 #include <unistd.h>
 
@@ -14,6 +13,7 @@
 #include "results/csv.hpp"
 #include "results/report.hpp"
 #include "results/store.hpp"
+#include "support/text.hpp"
 
 namespace mhb {
 namespace {
@@ -25,11 +25,7 @@ bool matplotlib_found() {
     return find_matplotlib_python({"/usr/bin/python3", "python3"}).has_value();
 }
 
-// "nan" or "-nan" as printf writes them, as a word.
-bool prints_nan(const std::string& text) {
-    static const std::regex nan_word("(^|[^A-Za-z])-?nan([^A-Za-z]|$)");
-    return std::regex_search(text, nan_word);
-}
+using mhb::test_support::prints_nan;
 
 void expect_no_nan_in_tables(const fs::path& report) {
     std::size_t tables = 0;

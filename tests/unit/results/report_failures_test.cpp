@@ -10,7 +10,6 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <limits>
-#include <regex>
 #include <sstream>
 #include <unistd.h>
 
@@ -21,6 +20,7 @@
 #include "results/study_index.hpp"
 #include "results/table.hpp"
 #include "support/files.hpp"
+#include "support/text.hpp"
 
 namespace mhb {
 namespace {
@@ -158,11 +158,7 @@ StudyData mixed_study() {
     return data;
 }
 
-// "nan" or "-nan" as printf writes them, as a word (a failure message may say "NaN").
-bool prints_nan(const std::string& text) {
-    static const std::regex nan_word("(^|[^A-Za-z])-?nan([^A-Za-z]|$)");
-    return std::regex_search(text, nan_word);
-}
+using mhb::test_support::prints_nan;
 
 std::size_t row_of(const CsvTable& t, const std::string& problem, const std::string& label) {
     for (std::size_t r = 0; r < t.rows.size(); ++r)
