@@ -21,6 +21,28 @@ double StudyEstimate::cpu_seconds() const {
     return total;
 }
 
+RunRecord short_run(RunRequest request, std::int64_t max_evaluations) {
+    request.budget.max_iterations = std::min<std::int64_t>(request.budget.max_iterations.value_or(3), 3);
+    request.budget.max_evaluations =
+        std::min<std::int64_t>(request.budget.max_evaluations.value_or(max_evaluations), max_evaluations);
+    request.budget.target_error.reset();
+    return execute_run(request);
+}
+
+double extrapolated_evaluations(const RunRecord& short_run, const Budget& budget) {
+    // Evaluations of the initialisation (iteration 0) and per iteration after it.
+    const double initial =
+        short_run.curve.empty() ? 0.0 : static_cast<double>(short_run.curve.front().evaluations);
+    const double per_iteration = short_run.iterations > 0
+                                     ? (static_cast<double>(short_run.evaluations) - initial) /
+                                           static_cast<double>(short_run.iterations)
+                                     : static_cast<double>(short_run.evaluations);
+    double full = budget.max_evaluations ? static_cast<double>(*budget.max_evaluations) : 1e300;
+    if (budget.max_iterations)
+        full = std::min(full, initial + per_iteration * static_cast<double>(*budget.max_iterations));
+    return full;
+}
+
 StudyEstimate estimate_study(const PreparedStudy& study, std::size_t problems_per_algorithm) {
     StudyEstimate estimate;
     const std::size_t algorithms = study.optimizers.size();
@@ -46,28 +68,14 @@ StudyEstimate estimate_study(const PreparedStudy& study, std::size_t problems_pe
             for (const std::size_t p : sample) {
                 const auto run_id =
                     static_cast<std::int64_t>(((b * problems + p) * algorithms + a)) * study.study.runs;
-                RunRequest request = study.request(run_id);
-                request.budget.max_iterations = std::min<std::int64_t>(budget.max_iterations.value_or(3), 3);
-                request.budget.max_evaluations =
-                    std::min<std::int64_t>(budget.max_evaluations.value_or(2000), 2000);
-                request.budget.target_error.reset();
+                const RunRequest request = study.request(run_id);
                 const auto started = std::chrono::steady_clock::now();
-                const RunRecord record = execute_run(request);
+                const RunRecord record = short_run(request, 2000);
                 const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
                 ++estimate.calibration_runs;
                 if (!record.ok || record.evaluations <= 0)
                     continue;
-                // Evaluations of the initialisation (iteration 0) and per iteration after it.
-                const double initial =
-                    record.curve.empty() ? 0.0 : static_cast<double>(record.curve.front().evaluations);
-                const double per_iteration = record.iterations > 0
-                                                 ? (static_cast<double>(record.evaluations) - initial) /
-                                                       static_cast<double>(record.iterations)
-                                                 : static_cast<double>(record.evaluations);
-                double full = budget.max_evaluations ? static_cast<double>(*budget.max_evaluations) : 1e300;
-                if (budget.max_iterations)
-                    full =
-                        std::min(full, initial + per_iteration * static_cast<double>(*budget.max_iterations));
+                const double full = extrapolated_evaluations(record, budget);
                 evaluations += full;
                 seconds += full * wall.count() / static_cast<double>(record.evaluations);
             }

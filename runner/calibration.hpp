@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "results/run_record.hpp"
+#include "runner/execute_run.hpp"
 #include "runner/study.hpp"
 
 namespace mhb {
@@ -22,6 +24,15 @@ struct StudyEstimate {
     [[nodiscard]] double evaluations() const;
     [[nodiscard]] double cpu_seconds() const;
 };
+
+// A short run: `request` cut to at most 3 iterations and `max_evaluations` evaluations, no
+// target. Deterministic like every run.
+RunRecord short_run(RunRequest request, std::int64_t max_evaluations);
+
+// The evaluations one run under `budget` spends, extrapolated from a short run of the same
+// algorithm and problem: its initialisation plus its evaluations per iteration times the
+// iterations, capped by the budget's evaluations (1e300 for a budget without either).
+double extrapolated_evaluations(const RunRecord& short_run, const Budget& budget);
 
 // Runs each algorithm on up to `problems_per_algorithm` problems (spread over the study's list)
 // for at most 3 iterations and 2000 evaluations, and extrapolates to the full budgets.

@@ -6,7 +6,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "runner/execute_run.hpp"
+#include "runner/calibration.hpp"
 
 namespace mhb {
 
@@ -51,24 +51,10 @@ std::vector<double> estimated_run_costs(const PreparedStudy& study) {
                 const auto first = static_cast<std::int64_t>((b * problems + p) * algorithms + a) * runs;
                 const auto key = std::make_tuple(b, a, dimension);
                 if (evaluations.count(key) == 0) {
-                    double per_run =
-                        budget.max_evaluations ? static_cast<double>(*budget.max_evaluations) : 1e300;
-                    if (budget.max_iterations) {
-                        RunRequest request = study.request(first);
-                        request.budget.max_iterations = std::min<std::int64_t>(*budget.max_iterations, 3);
-                        request.budget.max_evaluations =
-                            std::min<std::int64_t>(budget.max_evaluations.value_or(100000), 100000);
-                        request.budget.target_error.reset();
-                        const RunRecord r = execute_run(request);
-                        const double initial =
-                            r.curve.empty() ? 0.0 : static_cast<double>(r.curve.front().evaluations);
-                        const double per_iteration = r.iterations > 0
-                                                         ? (static_cast<double>(r.evaluations) - initial) /
-                                                               static_cast<double>(r.iterations)
-                                                         : static_cast<double>(r.evaluations);
-                        per_run = std::min(
-                            per_run, initial + per_iteration * static_cast<double>(*budget.max_iterations));
-                    }
+                    const double per_run =
+                        budget.max_iterations
+                            ? extrapolated_evaluations(short_run(study.request(first), 100000), budget)
+                            : static_cast<double>(budget.max_evaluations.value_or(1));
                     evaluations[key] = std::max(per_run, 1.0);
                 }
                 for (std::int64_t r = 0; r < runs; ++r)
