@@ -19,20 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 using mhb::test_support::read_text;
 
-struct TemporaryDirectories {
-    std::vector<fs::path> paths;
-    ~TemporaryDirectories() {
-        std::error_code ec;
-        for (const auto& p : paths)
-            fs::remove_all(p, ec);
-    }
-} temporary_directories;
-
 fs::path fresh_dir(const std::string& name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("mhb_report_factors_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    temporary_directories.paths.push_back(dir);
+    const fs::path dir = mhb::test_support::fresh_temporary_path("mhb_report_factors_", name);
     return dir;
 }
 

@@ -29,20 +29,8 @@ using mhb::test_support::read_text;
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-struct TemporaryDirectories {
-    std::vector<fs::path> paths;
-    ~TemporaryDirectories() {
-        std::error_code ec;
-        for (const auto& p : paths)
-            fs::remove_all(p, ec);
-    }
-} temporary_directories;
-
 fs::path fresh_dir(const std::string& name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("mhb_report_failures_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    temporary_directories.paths.push_back(dir);
+    const fs::path dir = mhb::test_support::fresh_temporary_path("mhb_report_failures_", name);
     return dir;
 }
 

@@ -80,22 +80,9 @@ RunRecord sphere_run(std::size_t a, std::int64_t i, std::int64_t id) {
     return r;
 }
 
-// Removes the studies this process made when it exits.
-struct TemporaryDirectories {
-    std::vector<fs::path> paths;
-    ~TemporaryDirectories() {
-        std::error_code ec;
-        for (const auto& p : paths)
-            fs::remove_all(p, ec);
-    }
-} temporary_directories;
-
 fs::path make_study(const std::string& name) {
     // The process id keeps tests that CTest runs in parallel (one process each) apart.
-    const fs::path dir =
-        fs::temp_directory_path() / ("mhb_report_test_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    temporary_directories.paths.push_back(dir);
+    const fs::path dir = mhb::test_support::fresh_temporary_path("mhb_report_test_", name);
     StudyWriter writer(dir, "[study]\nname=synthetic\n", "threads=1\n", {"Rs", "Ld", "Lq", "psi"}, false);
     std::int64_t id = 0;
     for (std::size_t a = 0; a < algorithms.size(); ++a)
