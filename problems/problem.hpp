@@ -22,6 +22,13 @@ struct Box {
     void validate(const std::string& owner) const;
 };
 
+// A file a problem was read from, with the SHA-256 of the bytes it read: a study's run identity
+// uses the content, not the path, so a file changed behind `data=` is noticed.
+struct DataFile {
+    std::string path;   // as given in the spec
+    std::string sha256; // 64 lowercase hex digits
+};
+
 struct KnownOptimum {
     double f = 0.0;
     std::optional<Eigen::VectorXd> x; // where it is attained, if known
@@ -47,6 +54,10 @@ public:
     [[nodiscard]] virtual std::vector<std::string> parameter_names() const { return {}; }
     // The parameters that generated the data, where known, so errors can be reported.
     [[nodiscard]] virtual std::optional<Eigen::VectorXd> true_parameters() const { return std::nullopt; }
+
+    // The files the problem's data came from, in the order given; empty for problems that read
+    // none (test functions, simulated drives).
+    [[nodiscard]] virtual std::vector<DataFile> data_files() const { return {}; }
 };
 
 } // namespace mhb

@@ -2,25 +2,31 @@
 //
 //   study.ini        the study as run (written by the runner; re-runnable with --study-file)
 //   context.ini      version, git commit, compiler, build type, threads, date (varies by machine)
-//   runs.csv         one record per run, sorted by run_id          } identical for any thread
-//   curves.csv       best-so-far per iteration (long format)        } count: finished only by
-//   checkpoints.csv  best-so-far on the shared evaluation grid      } StudyWriter::finish()
-//   trajectories.csv best x per iteration, for named parameters     }
+//   store.bin        every finished run, keyed by its identity (see RunKey): appended and flushed
+//                    as each run finishes, kept when the study is done, so an interrupted study
+//                    resumes and a finished one grows (more runs, algorithms, problems, budgets)
+//                    by computing only the runs it does not hold
+//   runs.csv         one record per run of study.ini, sorted by run_id  } rendered from store.bin;
+//   curves.csv       best-so-far per iteration (long format)          } identical for any thread
+//   checkpoints.csv  best-so-far on the shared evaluation grid        } count, finished only by
+//   trajectories.csv best x per iteration, for named parameters       } StudyWriter::finish()
 //   algorithms.csv   one row per algorithm of the study: its canonical spec, its display label
 //                    and its full spec (every parameter, defaults included)
 //   timings.csv      wall seconds per run (the one thing that varies between two runs)
-//   journal.txt      while a study runs: every finished run, appended and flushed at once, so
-//                    an interrupted study resumes without losing or repeating a run
 //
 // A directory is a study when it holds .mhbench-study (or, from before that marker, study.ini
 // with runs.csv or journal.txt); it is a finished study exactly when runs.csv exists, written
-// last, by rename.
+// last, by rename, and removed first whenever the study is changed. Studies written before
+// store.bin (format 2: journal.txt keyed by run_id) are read, but not resumed or extended.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -43,7 +49,35 @@ struct StudyFiles {
     static constexpr const char* marker = ".mhbench-study";
     // In a shard's directory (`mhbench run --shard i/n`): "shard = i/n".
     static constexpr const char* shard = "shard.txt";
+    static constexpr const char* store = "store.bin";
+    // Format 2 (before store.bin): the journal of an unfinished study, keyed by run_id.
     static constexpr const char* journal = "journal.txt";
+};
+
+// The format of store.bin and of the records in it; part of every run's identity, so a change to
+// what a record holds makes earlier stores refuse to be mixed with new runs.
+inline constexpr int store_format_version = 3;
+
+// What determines a run's record, and how a user names the run. The runner builds one per run of
+// a study (runner/run_identity.hpp); the store keeps it with the record.
+struct RunKey {
+    std::string identity; // SHA-256 (hex) of `facts`: the store's key
+    // What a user calls "the same run": algorithm label, problem as written, budget, run index.
+    // Two keys with one slot and different identities mean something changed under a stored run.
+    std::string slot;
+    std::string facts;     // "name = value" lines that determine the record (canonical specs, data
+                           // file contents by SHA-256, budget, run index, seed, format version)
+    std::string notes;     // "name = value" lines only for messages (data file paths)
+    std::string algorithm; // canonical spec and problem as the study writes them in runs.csv
+    std::string problem;
+};
+
+// The runs of the study being written, by run_id, and how to word a change under a stored run.
+struct StudyRunKeys {
+    std::int64_t count = 0;
+    std::function<RunKey(std::int64_t run_id)> key;
+    // One line saying what differs between a stored run and the wanted one of the same slot.
+    std::function<std::string(const RunKey& stored, const RunKey& wanted)> describe_change;
 };
 
 // An algorithm of the study as the report shows it (algorithms.csv).
@@ -53,47 +87,69 @@ struct AlgorithmInfo {
     std::string full_spec; // every declared parameter with its value, e.g. tlbo:np=50,r=coordinate
 };
 
+// What finish() wrote, for a summary without reading the files back.
+struct StudySummary {
+    std::int64_t runs = 0;
+    std::int64_t failed = 0;
+    std::int64_t evaluations = 0;
+    std::vector<RunRecord> first_failures; // up to three, without curves
+};
+
 class StudyWriter {
 public:
     // Prepares `dir` for a study described by `study_text` (the content of study.ini).
-    // - If `dir` holds an unfinished run of the same study, its finished runs are kept
-    //   (completed() lists them) and the study resumes.
-    // - If it holds a finished study, or an unfinished one of another study, this throws
-    //   std::runtime_error unless `overwrite` is set, in which case those files are replaced.
-    // - If it holds anything but a study (a user's own files), this throws, overwrite or not.
+    // - The runs in `dir`'s store.bin whose identity is a run of this study are kept
+    //   (completed() lists their run_ids): the same study resumes, or re-renders when it was
+    //   finished; a larger one (more runs, algorithms, problems, budgets) computes only the rest.
+    // - A stored run with the slot of a wanted run but another identity (a data file, parameter
+    //   or seed that changed) throws std::runtime_error with one line per change, unless
+    //   `overwrite` is set, in which case the store is emptied and every run done again.
+    // - A study of format 2 (journal.txt, or runs.csv without store.bin) throws unless
+    //   `overwrite`; anything but a study (a user's own files) throws, overwrite or not.
     // `parameter_columns` is the union of the named parameters of the study's problems, in order:
     // runs.csv gets the columns P, P_true, P_opt and P_err_pct for each (P_opt: the coordinate of
     // the known optimum, e.g. the least-squares estimate; P_err_pct: 100 (P - P_true) / P_true).
     // `algorithms` (in study order) becomes algorithms.csv; none: no such file.
+    // Without `keys`, a run's identity is its run_id within this study text (tests, and tools that
+    // write records directly): such a study resumes, but does not share runs with another.
     StudyWriter(std::filesystem::path dir, std::string study_text, std::string context_text,
                 std::vector<std::string> parameter_columns, bool overwrite,
-                const std::vector<AlgorithmInfo>& algorithms = {});
+                const std::vector<AlgorithmInfo>& algorithms = {}, std::optional<StudyRunKeys> keys = {});
 
     [[nodiscard]] const std::set<std::int64_t>& completed() const { return completed_; }
     [[nodiscard]] const std::filesystem::path& directory() const { return dir_; }
+    // Runs in the store that this study does not use (kept for a later, larger study).
+    [[nodiscard]] std::int64_t unused_stored_runs() const { return unused_stored_; }
 
-    // Journals one finished run (thread-safe; the block is written and flushed in one go).
+    // Stores one finished run (thread-safe; the block is written and flushed in one go).
     void append(const RunRecord& record, double wall_seconds);
 
-    // Writes the sorted result files, runs.csv last, and removes the journal.
+    // Writes the sorted result files of every stored run of the study, runs.csv last. Records are
+    // read back from the store one at a time, so memory does not grow with the study.
     void finish();
+    // Of the files finish() wrote.
+    [[nodiscard]] const StudySummary& summary() const { return summary_; }
 
 private:
-    struct Block {
-        std::string run_line;
-        std::string curve_lines;
-        std::string checkpoint_lines;
-        std::string trajectory_lines;
-        std::string timing_line;
+    struct Stored {
+        std::uint64_t offset = 0; // of the block's payload in store.bin
+        std::uint64_t size = 0;
+        std::string slot;
     };
-    [[nodiscard]] Block render(const RunRecord& record, double wall_seconds) const;
-    void load_journal();
+    [[nodiscard]] RunKey key_of(std::int64_t run_id, const RunRecord* record) const;
+    void load_store();
+    void check_changes(bool overwrite);
 
     std::filesystem::path dir_;
     std::vector<std::string> parameter_columns_;
+    std::optional<StudyRunKeys> keys_;
+    std::string unkeyed_suffix_; // of identities without keys: " of study <hash of the study text>"
     std::mutex mutex_;
-    std::map<std::int64_t, Block> blocks_;
+    std::ofstream store_;
+    std::map<std::string, Stored> index_; // identity -> where its newest block is
     std::set<std::int64_t> completed_;
+    std::int64_t unused_stored_ = 0;
+    StudySummary summary_;
 };
 
 // True when `dir` is a mhbench study directory (see above).

@@ -42,10 +42,11 @@ std::int64_t find_run(const std::map<std::int64_t, std::size_t>& index, const Cs
 StudyData load_study(const fs::path& dir) {
     if (!fs::is_directory(dir))
         throw std::runtime_error(dir.string() + ": is not a directory");
-    if (!fs::exists(dir / StudyFiles::runs) && fs::exists(dir / StudyFiles::journal))
-        throw std::runtime_error(dir.string() +
-                                 ": holds an unfinished study (journal.txt but no runs.csv); run the same "
-                                 "command again to resume it");
+    if (!fs::exists(dir / StudyFiles::runs) &&
+        (fs::exists(dir / StudyFiles::store) || fs::exists(dir / StudyFiles::journal)))
+        throw std::runtime_error(
+            dir.string() + ": holds an unfinished study (no runs.csv yet); run the same command again to "
+                           "complete it");
     if (!is_study_directory(dir))
         throw std::runtime_error(dir.string() + ": is not a mhbench study directory (no " +
                                  StudyFiles::marker + ", study.ini or runs.csv)");

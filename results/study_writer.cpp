@@ -1,4 +1,5 @@
 // StudyWriter: the journal of finished runs, resuming, and the sorted result files (see store.hpp).
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -7,6 +8,7 @@
 #include <stdexcept>
 
 #include "results/csv.hpp"
+#include "results/record_codec.hpp"
 #include "results/store.hpp"
 
 namespace mhb {
@@ -25,75 +27,19 @@ std::string join_numbers(const std::vector<double>& values) {
 }
 
 const char* const result_files[] = {StudyFiles::runs,         StudyFiles::curves,  StudyFiles::checkpoints,
-                                    StudyFiles::trajectories, StudyFiles::timings, StudyFiles::journal};
+                                    StudyFiles::trajectories, StudyFiles::timings, StudyFiles::journal,
+                                    StudyFiles::store};
 
-} // namespace
+struct Block {
+    std::string run_line;
+    std::string curve_lines;
+    std::string checkpoint_lines;
+    std::string trajectory_lines;
+    std::string timing_line;
+};
 
-std::string runs_csv_header(const std::vector<std::string>& parameter_columns) {
-    std::string header =
-        "run_id,algorithm,problem,budget,run,seed,status,evaluations,iterations,best_f,f_opt,error,"
-        "evals_to_target,best_x";
-    for (const auto& p : parameter_columns)
-        header += "," + p + "," + p + "_true," + p + "_opt," + p + "_err_pct";
-    return header + ",message\n";
-}
-
-bool is_study_directory(const fs::path& dir) {
-    std::error_code ec;
-    if (fs::exists(dir / StudyFiles::marker, ec))
-        return true;
-    return fs::exists(dir / StudyFiles::study, ec) &&
-           (fs::exists(dir / StudyFiles::runs, ec) || fs::exists(dir / StudyFiles::journal, ec));
-}
-
-StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string context_text,
-                         std::vector<std::string> parameter_columns, bool overwrite,
-                         const std::vector<AlgorithmInfo>& algorithms)
-    : dir_(std::move(dir)), parameter_columns_(std::move(parameter_columns)) {
-    std::error_code ec;
-    if (fs::is_directory(dir_, ec) && !fs::is_empty(dir_, ec) && !is_study_directory(dir_))
-        throw std::runtime_error(dir_.string() + ": is not empty and is not a mhbench study (it has no " +
-                                 StudyFiles::marker +
-                                 "); its files are left alone: choose a new or empty --out");
-    fs::create_directories(dir_, ec);
-    if (ec || !fs::is_directory(dir_))
-        throw std::runtime_error(dir_.string() + ": cannot create the output directory (" +
-                                 (ec ? ec.message() : std::string("not a directory")) + ")");
-    const bool finished = fs::exists(dir_ / StudyFiles::runs);
-    const bool unfinished = fs::exists(dir_ / StudyFiles::journal);
-    bool resume = false;
-    if (finished && !overwrite)
-        throw std::runtime_error(dir_.string() +
-                                 ": holds a finished study; choose another --out or pass --overwrite");
-    if (!finished && unfinished) {
-        std::string previous;
-        if (fs::exists(dir_ / StudyFiles::study))
-            previous = read_whole_file(dir_ / StudyFiles::study);
-        resume = previous == study_text;
-        if (!resume && !overwrite)
-            throw std::runtime_error(dir_.string() +
-                                     ": holds an unfinished run of another study; choose another --out or "
-                                     "pass --overwrite");
-    }
-    if (!resume)
-        for (const char* name : result_files)
-            fs::remove(dir_ / name, ec);
-    write_file_atomically(dir_ / StudyFiles::marker, "mhbench study directory, format 2\n");
-    write_file_atomically(dir_ / StudyFiles::study, study_text);
-    write_file_atomically(dir_ / StudyFiles::context, context_text);
-    if (algorithms.empty()) {
-        fs::remove(dir_ / StudyFiles::algorithms, ec);
-    } else {
-        std::string table = "algorithm,label,parameters\n";
-        for (const auto& a : algorithms)
-            table += csv_field(a.spec) + ',' + csv_field(a.label) + ',' + csv_field(a.full_spec) + '\n';
-        write_file_atomically(dir_ / StudyFiles::algorithms, table);
-    }
-    if (resume)
-        load_journal();
-}
-
-StudyWriter::Block StudyWriter::render(const RunRecord& r, double wall_seconds) const {
+// The lines a run contributes to each result file, for the study's parameter columns.
+Block render(const RunRecord& r, double wall_seconds, const std::vector<std::string>& columns) {
     Block block;
     const std::string id = std::to_string(r.run_id);
     std::string line =
@@ -103,7 +49,7 @@ StudyWriter::Block StudyWriter::render(const RunRecord& r, double wall_seconds) 
         (r.ok ? csv_number(r.best_f) : "") + ',' + csv_optional(r.f_opt) + ',' + csv_optional(r.error()) +
         ',' + (r.evaluations_to_target ? std::to_string(*r.evaluations_to_target) : "") + ',' +
         join_numbers(r.best_x);
-    for (const auto& column : parameter_columns_) {
+    for (const auto& column : columns) {
         std::string value;
         std::string truth;
         std::string optimum;
@@ -129,7 +75,7 @@ StudyWriter::Block StudyWriter::render(const RunRecord& r, double wall_seconds) 
                              ',' + csv_number(p.best_f) + '\n';
         if (!r.parameter_names.empty() && !p.best_x.empty()) {
             std::string row = id + ',' + std::to_string(p.iteration);
-            for (const auto& column : parameter_columns_) {
+            for (const auto& column : columns) {
                 std::string value;
                 for (std::size_t k = 0; k < r.parameter_names.size(); ++k)
                     if (r.parameter_names[k] == column && k < p.best_x.size())
@@ -146,129 +92,317 @@ StudyWriter::Block StudyWriter::render(const RunRecord& r, double wall_seconds) 
     return block;
 }
 
-namespace {
+// store.bin is a sequence of blocks: magic, payload size, payload (identity, slot, facts, notes,
+// the encoded record), end mark. A block without its end mark (the process died while writing
+// it) is cut off when the store is opened again.
+constexpr std::string_view block_magic = "MHBRUN3\n";
+constexpr std::string_view block_end = "MHBEND3\n";
 
-// Journal lines: "begin ID", then "R|C|K|T|W <csv line>", then "end ID". A block without its
-// "end" line (the process died while writing it) is dropped on resume.
-void append_tagged(std::string& out, char tag, const std::string& lines) {
-    std::size_t start = 0;
-    while (start < lines.size()) {
-        const auto end = lines.find('\n', start);
-        out += tag;
-        out += ' ';
-        out.append(lines, start, end - start + 1);
-        start = end + 1;
-    }
-}
-
-std::string journal_text(std::int64_t id, const std::string& run, const std::string& curves,
-                         const std::string& checkpoints, const std::string& trajectories,
-                         const std::string& timing) {
-    std::string text = "begin " + std::to_string(id) + '\n';
-    append_tagged(text, 'R', run);
-    append_tagged(text, 'C', curves);
-    append_tagged(text, 'K', checkpoints);
-    append_tagged(text, 'T', trajectories);
-    append_tagged(text, 'W', timing);
-    return text + "end " + std::to_string(id) + '\n';
+std::string store_block(const RunKey& key, const RunRecord& record, double wall_seconds) {
+    ByteWriter payload;
+    payload.text(key.identity);
+    payload.text(key.slot);
+    payload.text(key.facts);
+    payload.text(key.notes);
+    encode_record(payload, record, wall_seconds);
+    ByteWriter size;
+    size.u64(payload.bytes().size());
+    return std::string(block_magic) + size.bytes() + payload.bytes() + std::string(block_end);
 }
 
 } // namespace
 
-void StudyWriter::load_journal() {
-    std::ifstream in(dir_ / StudyFiles::journal, std::ios::binary);
-    std::string line;
-    Block current;
-    std::int64_t current_id = -1;
-    bool in_block = false;
-    while (std::getline(in, line)) {
-        if (in.eof())
-            break; // a last line without its newline was cut short
-        if (line.rfind("begin ", 0) == 0) {
-            current = Block{};
-            in_block =
-                std::from_chars(line.data() + 6, line.data() + line.size(), current_id).ec == std::errc();
-        } else if (line.rfind("end ", 0) == 0) {
-            std::int64_t id = -2;
-            std::from_chars(line.data() + 4, line.data() + line.size(), id);
-            if (in_block && id == current_id && !current.run_line.empty()) {
-                blocks_[id] = current;
-                completed_.insert(id);
-            }
-            in_block = false;
-        } else if (in_block && line.size() >= 2 && line[1] == ' ') {
-            const std::string content = line.substr(2) + '\n';
-            switch (line[0]) {
-            case 'R':
-                current.run_line += content;
-                break;
-            case 'C':
-                current.curve_lines += content;
-                break;
-            case 'K':
-                current.checkpoint_lines += content;
-                break;
-            case 'T':
-                current.trajectory_lines += content;
-                break;
-            case 'W':
-                current.timing_line += content;
-                break;
-            default:
-                in_block = false;
-            }
-        } else {
-            in_block = false;
-        }
+std::string runs_csv_header(const std::vector<std::string>& parameter_columns) {
+    std::string header =
+        "run_id,algorithm,problem,budget,run,seed,status,evaluations,iterations,best_f,f_opt,error,"
+        "evals_to_target,best_x";
+    for (const auto& p : parameter_columns)
+        header += "," + p + "," + p + "_true," + p + "_opt," + p + "_err_pct";
+    return header + ",message\n";
+}
+
+bool is_study_directory(const fs::path& dir) {
+    std::error_code ec;
+    if (fs::exists(dir / StudyFiles::marker, ec))
+        return true;
+    return fs::exists(dir / StudyFiles::study, ec) &&
+           (fs::exists(dir / StudyFiles::runs, ec) || fs::exists(dir / StudyFiles::journal, ec));
+}
+
+StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string context_text,
+                         std::vector<std::string> parameter_columns, bool overwrite,
+                         const std::vector<AlgorithmInfo>& algorithms, std::optional<StudyRunKeys> keys)
+    : dir_(std::move(dir)), parameter_columns_(std::move(parameter_columns)), keys_(std::move(keys)),
+      unkeyed_suffix_(" of study " + std::to_string(std::hash<std::string>{}(study_text))) {
+    std::error_code ec;
+    if (fs::is_directory(dir_, ec) && !fs::is_empty(dir_, ec) && !is_study_directory(dir_))
+        throw std::runtime_error(dir_.string() + ": is not empty and is not a mhbench study (it has no " +
+                                 StudyFiles::marker +
+                                 "); its files are left alone: choose a new or empty --out");
+    fs::create_directories(dir_, ec);
+    if (ec || !fs::is_directory(dir_))
+        throw std::runtime_error(dir_.string() + ": cannot create the output directory (" +
+                                 (ec ? ec.message() : std::string("not a directory")) + ")");
+    const bool has_store = fs::exists(dir_ / StudyFiles::store);
+    const bool earlier_format =
+        !has_store && (fs::exists(dir_ / StudyFiles::journal) || fs::exists(dir_ / StudyFiles::runs));
+    if (earlier_format && !overwrite)
+        throw std::runtime_error(dir_.string() +
+                                 ": holds a study written by an earlier mhbench (no store.bin), which cannot "
+                                 "be resumed or extended; choose another --out or pass --overwrite");
+    if (overwrite || earlier_format)
+        for (const char* name : result_files)
+            fs::remove(dir_ / name, ec);
+    load_store();
+    check_changes(overwrite);
+
+    // A changed study is unfinished until finish() writes its files again.
+    const bool same_study =
+        fs::exists(dir_ / StudyFiles::study) && read_whole_file(dir_ / StudyFiles::study) == study_text;
+    if (!same_study)
+        fs::remove(dir_ / StudyFiles::runs, ec);
+    write_file_atomically(dir_ / StudyFiles::marker, "mhbench study directory, format 3\n");
+    write_file_atomically(dir_ / StudyFiles::study, study_text);
+    write_file_atomically(dir_ / StudyFiles::context, context_text);
+    if (algorithms.empty()) {
+        fs::remove(dir_ / StudyFiles::algorithms, ec);
+    } else {
+        std::string table = "algorithm,label,parameters\n";
+        for (const auto& a : algorithms)
+            table += csv_field(a.spec) + ',' + csv_field(a.label) + ',' + csv_field(a.full_spec) + '\n';
+        write_file_atomically(dir_ / StudyFiles::algorithms, table);
     }
-    // Rewrite the journal with the complete blocks only, so that new blocks never follow a
-    // half-written line.
-    std::string text;
-    for (const auto& [id, b] : blocks_)
-        text += journal_text(id, b.run_line, b.curve_lines, b.checkpoint_lines, b.trajectory_lines,
-                             b.timing_line);
-    write_file_atomically(dir_ / StudyFiles::journal, text);
+    errno = 0;
+    store_.open(dir_ / StudyFiles::store, std::ios::binary | std::ios::app);
+    if (!store_)
+        throw std::runtime_error((dir_ / StudyFiles::store).string() + ": cannot be written (" +
+                                 (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
+}
+
+RunKey StudyWriter::key_of(std::int64_t run_id, const RunRecord* record) const {
+    if (keys_)
+        return keys_->key(run_id);
+    RunKey key;
+    key.identity = "run " + std::to_string(run_id) + unkeyed_suffix_;
+    key.slot = key.identity;
+    if (record != nullptr) {
+        key.algorithm = record->algorithm;
+        key.problem = record->problem;
+    }
+    return key;
+}
+
+void StudyWriter::load_store() {
+    const fs::path path = dir_ / StudyFiles::store;
+    std::error_code ec;
+    if (fs::is_directory(path, ec))
+        throw std::runtime_error(path.string() + ": cannot be read (" + std::strerror(EISDIR) + ")");
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return;
+    const std::uint64_t file_size = fs::file_size(path, ec);
+    if (ec)
+        throw std::runtime_error(path.string() + ": cannot be read (" + ec.message() + ")");
+    std::uint64_t good_end = 0; // just past the last complete block
+    std::string header(block_magic.size() + 8, '\0');
+    std::string payload;
+    std::string end(block_end.size(), '\0');
+    while (in.read(header.data(), static_cast<std::streamsize>(header.size()))) {
+        if (std::string_view(header).substr(0, block_magic.size()) != block_magic)
+            break;
+        ByteReader size_reader(std::string_view(header).substr(block_magic.size()), path.string());
+        const std::uint64_t size = size_reader.u64();
+        if (size > file_size - good_end - header.size()) // cut short (or corrupt): never allocate for it
+            break;
+        payload.resize(static_cast<std::size_t>(size));
+        if (!in.read(payload.data(), static_cast<std::streamsize>(size)) ||
+            !in.read(end.data(), static_cast<std::streamsize>(end.size())) || end != block_end)
+            break;
+        try {
+            ByteReader reader(payload, path.string());
+            const std::string identity = reader.text();
+            Stored stored;
+            stored.offset = good_end + header.size();
+            stored.size = size;
+            stored.slot = reader.text();
+            index_[identity] = std::move(stored);
+        } catch (const std::runtime_error&) {
+            break;
+        }
+        good_end += header.size() + size + end.size();
+    }
+    in.close();
+    // Cut a half-written last block off, so that new blocks never follow it.
+    if (file_size != good_end)
+        fs::resize_file(path, good_end, ec);
+    if (ec)
+        throw std::runtime_error(path.string() + ": cannot be repaired (" + ec.message() + ")");
+}
+
+void StudyWriter::check_changes(bool overwrite) {
+    std::map<std::string, std::string> slot_identity; // of the stored runs
+    for (const auto& [identity, stored] : index_)
+        slot_identity[stored.slot] = identity;
+    std::set<std::string> used;
+    std::vector<std::string> changes;
+    std::int64_t changed_runs = 0;
+    const std::int64_t count = keys_ ? keys_->count : 0;
+    for (std::int64_t id = 0; id < count; ++id) {
+        const RunKey wanted = keys_->key(id);
+        if (index_.count(wanted.identity) != 0) {
+            completed_.insert(id);
+            used.insert(wanted.identity);
+            continue;
+        }
+        const auto same_slot = slot_identity.find(wanted.slot);
+        if (same_slot == slot_identity.end())
+            continue;
+        ++changed_runs;
+        const Stored& stored = index_.at(same_slot->second);
+        std::ifstream in(dir_ / StudyFiles::store, std::ios::binary);
+        std::string payload(static_cast<std::size_t>(stored.size), '\0');
+        in.seekg(static_cast<std::streamoff>(stored.offset));
+        in.read(payload.data(), static_cast<std::streamsize>(payload.size()));
+        ByteReader reader(payload, (dir_ / StudyFiles::store).string());
+        RunKey old;
+        old.identity = reader.text();
+        old.slot = reader.text();
+        old.facts = reader.text();
+        old.notes = reader.text();
+        const std::string change =
+            keys_->describe_change ? keys_->describe_change(old, wanted) : "run " + wanted.slot + " changed";
+        if (std::find(changes.begin(), changes.end(), change) == changes.end())
+            changes.push_back(change);
+    }
+    if (!keys_) {
+        for (const auto& [identity, stored] : index_) {
+            std::int64_t id = 0;
+            const auto [end, error] =
+                std::from_chars(identity.data() + 4, identity.data() + identity.size(), id);
+            if (identity.rfind("run ", 0) == 0 && error == std::errc() &&
+                std::string_view(end, static_cast<std::size_t>(identity.data() + identity.size() - end)) ==
+                    unkeyed_suffix_)
+                completed_.insert(id);
+        }
+        return;
+    }
+    unused_stored_ = static_cast<std::int64_t>(index_.size() - used.size());
+    if (changes.empty() || overwrite)
+        return;
+    std::string message = dir_.string() + ": " + std::to_string(changed_runs) + " stored run" +
+                          (changed_runs == 1 ? "" : "s") + " would change:";
+    constexpr std::size_t shown = 5;
+    for (std::size_t i = 0; i < changes.size() && i < shown; ++i)
+        message += "\n  " + changes[i];
+    if (changes.size() > shown)
+        message += "\n  and " + std::to_string(changes.size() - shown) + " more";
+    message += "\npass --overwrite to discard the stored runs and start again, or choose another --out";
+    throw std::runtime_error(message);
 }
 
 void StudyWriter::append(const RunRecord& record, double wall_seconds) {
-    Block block = render(record, wall_seconds);
-    const std::string text = journal_text(record.run_id, block.run_line, block.curve_lines,
-                                          block.checkpoint_lines, block.trajectory_lines, block.timing_line);
+    const RunKey key = key_of(record.run_id, &record);
+    const std::string block = store_block(key, record, wall_seconds);
     const std::lock_guard<std::mutex> lock(mutex_);
-    std::ofstream out(dir_ / StudyFiles::journal, std::ios::binary | std::ios::app);
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.flush();
-    if (!out)
-        throw std::runtime_error((dir_ / StudyFiles::journal).string() + ": writing failed (" +
+    const auto offset = static_cast<std::uint64_t>(store_.tellp());
+    store_.write(block.data(), static_cast<std::streamsize>(block.size()));
+    store_.flush();
+    if (!store_)
+        throw std::runtime_error((dir_ / StudyFiles::store).string() + ": writing failed (" +
                                  std::strerror(errno) + ")");
-    blocks_[record.run_id] = std::move(block);
+    Stored stored;
+    stored.offset = offset + block_magic.size() + 8;
+    stored.size = block.size() - block_magic.size() - 8 - block_end.size();
+    stored.slot = key.slot;
+    index_[key.identity] = std::move(stored);
     completed_.insert(record.run_id);
 }
 
 void StudyWriter::finish() {
     const std::lock_guard<std::mutex> lock(mutex_);
-    std::string runs = runs_csv_header(parameter_columns_);
-    std::string curves = "run_id,iteration,evaluations,best_f\n";
-    std::string checkpoints = "run_id,evaluations,best_f\n";
-    std::string trajectories = "run_id,iteration";
+    store_.flush();
+    std::ifstream in(dir_ / StudyFiles::store, std::ios::binary);
+    // Each file is streamed to its temporary name and renamed at the end, runs.csv last.
+    struct Output {
+        fs::path path;
+        fs::path temporary;
+        std::ofstream out;
+    };
+    const auto open = [&](const char* name) {
+        Output o;
+        o.path = dir_ / name;
+        o.temporary = dir_ / (std::string(name) + ".tmp");
+        errno = 0;
+        o.out.open(o.temporary, std::ios::binary | std::ios::trunc);
+        if (!o.out)
+            throw std::runtime_error(o.path.string() + ": cannot be written (" +
+                                     (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
+        return o;
+    };
+    Output runs = open(StudyFiles::runs);
+    Output curves = open(StudyFiles::curves);
+    Output checkpoints = open(StudyFiles::checkpoints);
+    Output trajectories = open(StudyFiles::trajectories);
+    Output timings = open(StudyFiles::timings);
+    runs.out << runs_csv_header(parameter_columns_);
+    curves.out << "run_id,iteration,evaluations,best_f\n";
+    checkpoints.out << "run_id,evaluations,best_f\n";
+    trajectories.out << "run_id,iteration";
     for (const auto& p : parameter_columns_)
-        trajectories += "," + p;
-    trajectories += '\n';
-    std::string timings = "run_id,wall_seconds\n";
-    for (const auto& [id, b] : blocks_) {
-        runs += b.run_line;
-        curves += b.curve_lines;
-        checkpoints += b.checkpoint_lines;
-        trajectories += b.trajectory_lines;
-        timings += b.timing_line;
+        trajectories.out << "," << p;
+    trajectories.out << '\n';
+    timings.out << "run_id,wall_seconds\n";
+
+    summary_ = StudySummary{};
+    std::string payload;
+    for (const std::int64_t id : completed_) {
+        const RunKey key = key_of(id, nullptr);
+        const auto found = index_.find(key.identity);
+        if (found == index_.end())
+            continue;
+        payload.resize(static_cast<std::size_t>(found->second.size));
+        in.seekg(static_cast<std::streamoff>(found->second.offset));
+        if (!in.read(payload.data(), static_cast<std::streamsize>(payload.size())))
+            throw std::runtime_error((dir_ / StudyFiles::store).string() + ": cannot read run " +
+                                     std::to_string(id) + " back");
+        ByteReader reader(payload, (dir_ / StudyFiles::store).string());
+        for (int skipped = 0; skipped < 4; ++skipped) // identity, slot, facts, notes
+            reader.text();
+        DecodedRecord decoded = decode_record(reader);
+        // The record as this study names it: a run found by identity may come from a study that
+        // numbered it differently or read its data file from another path.
+        RunRecord& record = decoded.record;
+        record.run_id = id;
+        if (keys_) {
+            record.algorithm = key.algorithm;
+            record.problem = key.problem;
+        }
+        const Block block = render(record, decoded.wall_seconds, parameter_columns_);
+        ++summary_.runs;
+        summary_.evaluations += record.evaluations;
+        if (!record.ok) {
+            ++summary_.failed;
+            if (summary_.first_failures.size() < 3) {
+                record.curve.clear();
+                record.checkpoints.clear();
+                summary_.first_failures.push_back(std::move(record));
+            }
+        }
+        runs.out << block.run_line;
+        curves.out << block.curve_lines;
+        checkpoints.out << block.checkpoint_lines;
+        trajectories.out << block.trajectory_lines;
+        timings.out << block.timing_line;
     }
-    write_file_atomically(dir_ / StudyFiles::curves, curves);
-    write_file_atomically(dir_ / StudyFiles::checkpoints, checkpoints);
-    write_file_atomically(dir_ / StudyFiles::trajectories, trajectories);
-    write_file_atomically(dir_ / StudyFiles::timings, timings);
-    write_file_atomically(dir_ / StudyFiles::runs, runs);
-    std::error_code ec;
-    fs::remove(dir_ / StudyFiles::journal, ec);
+    for (Output* o : {&curves, &checkpoints, &trajectories, &timings, &runs}) {
+        o->out.close();
+        if (!o->out)
+            throw std::runtime_error(o->path.string() + ": writing failed (" + std::strerror(errno) + ")");
+        std::error_code ec;
+        fs::rename(o->temporary, o->path, ec);
+        if (ec)
+            throw std::runtime_error(o->path.string() + ": cannot be written (" + ec.message() + ")");
+    }
 }
 
 } // namespace mhb

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlopt.h>
 #include <oneapi/tbb/version.h>
+#include <set>
 #include <sys/utsname.h>
 #include <thread>
 #include <unistd.h>
@@ -113,6 +114,16 @@ std::string context_ini(int threads, const std::vector<std::string>& command_lin
     text += "date_utc = " + utc_now() + '\n';
     text += "hostname = " + host_name() + '\n';
     text += "command = " + command + '\n';
+    return text;
+}
+
+std::string context_data_files(const std::vector<std::unique_ptr<Problem>>& problems) {
+    std::string text;
+    std::set<std::string> seen;
+    for (const auto& problem : problems)
+        for (const auto& file : problem->data_files())
+            if (seen.insert(file.sha256 + " " + file.path).second)
+                text += "data_file = " + file.sha256 + " " + file.path + '\n';
     return text;
 }
 

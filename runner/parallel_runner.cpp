@@ -7,7 +7,6 @@
 #include <oneapi/tbb/info.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/partitioner.h>
-#include <set>
 #include <stdexcept>
 #include <vector>
 
@@ -30,14 +29,9 @@ RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const R
             wanted[i] = static_cast<std::int64_t>(i);
     }
     outcome.total = static_cast<std::int64_t>(wanted.size());
-    // Ids in the journal that are not runs to do would mean the writer was opened for another
-    // study or shard; StudyWriter compares study.ini first (and the CLI shard.txt), so this is a misuse.
-    const std::set<std::int64_t> wanted_set(wanted.begin(), wanted.end());
-    for (const std::int64_t id : writer.completed())
-        if (wanted_set.count(id) == 0)
-            throw std::logic_error("run_study: the journal holds run " + std::to_string(id) +
-                                   ", which is not a run of this study or shard");
-    outcome.resumed = static_cast<std::int64_t>(writer.completed().size());
+    // The store may hold more (runs of a larger study kept for later); only the wanted ones count.
+    for (const std::int64_t id : wanted)
+        outcome.resumed += static_cast<std::int64_t>(writer.completed().count(id));
 
     std::vector<std::int64_t> pending;
     pending.reserve(static_cast<std::size_t>(outcome.total - outcome.resumed));

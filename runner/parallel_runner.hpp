@@ -1,11 +1,11 @@
 // Runs a prepared study on oneTBB: one task per run (parallel_for, grain 1), the thread count
-// capped by tbb::global_control. Each finished run is journaled by the StudyWriter at once, so
-// an interruption loses nothing; runs already in the journal are skipped (resume). Results do
+// capped by tbb::global_control. Each finished run is stored by the StudyWriter at once, so
+// an interruption loses nothing; runs already in the store are skipped (resume, extension). Results do
 // not depend on the thread count: seeds come from derive_seed (via execute_run) and the store
 // sorts by run id.
 //
 // Cancellation: once `*stop` becomes true, no new run starts; runs under way finish and are
-// journaled. The CLI sets it from SIGINT/SIGTERM; tests set it from on_run_finished.
+// stored. The CLI sets it from SIGINT/SIGTERM; tests set it from on_run_finished.
 #pragma once
 
 #include <atomic>
@@ -24,7 +24,7 @@ struct RunnerOptions {
     const std::atomic<bool>* stop = nullptr; // may be set from a signal handler
     // The runs to do (a shard of the study, possibly none); unset: every run of the study.
     std::optional<std::vector<std::int64_t>> run_ids;
-    // Called after each run is journaled, with the runs now kept, the study's total and the
+    // Called after each run is stored, with the runs now kept, the study's total and the
     // evaluations that run spent. Calls are serialised (never two at once), but may come from any
     // worker thread.
     std::function<void(std::int64_t kept, std::int64_t total, std::int64_t evaluations)> on_run_finished;
@@ -32,13 +32,13 @@ struct RunnerOptions {
 
 struct RunnerOutcome {
     std::int64_t total = 0;   // runs to do: the study's, or the shard's
-    std::int64_t resumed = 0; // found already finished in the journal
-    std::int64_t kept = 0;    // finished and journaled, resumed ones included
+    std::int64_t resumed = 0; // found already finished in the store
+    std::int64_t kept = 0;    // finished and stored, resumed ones included
     bool interrupted = false; // stopped before all runs were done (the study is not finished)
 };
 
-// Runs every run of `study` not yet in `writer`'s journal. When all are done, finishes the
-// writer (sorted files, runs.csv last); when stopped early, leaves the journal for a resume.
+// Runs every run of `study` not yet in `writer`'s store. When all are done, finishes the
+// writer (sorted files, runs.csv last); when stopped early, leaves the store for a resume.
 // A run that throws becomes a failed record; an I/O error of the writer propagates.
 RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const RunnerOptions& options = {});
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -149,6 +150,43 @@ void prepare_algorithms(const Study& study, const AlgorithmRegistry& registry, P
     }
 }
 
+// `spec` with a relative `data=` path made absolute, so that a study file written into the study
+// directory reads the same data from wherever it is used. Paths joined by '+' are each resolved.
+Spec with_absolute_data_paths(Spec spec) {
+    for (auto& [key, value] : spec.parameters) {
+        if (key != "data")
+            continue;
+        std::string joined;
+        std::size_t start = 0;
+        while (start <= value.size()) {
+            const auto end = std::min(value.find('+', start), value.size());
+            std::filesystem::path path = value.substr(start, end - start);
+            if (!path.empty() && path.is_relative())
+                path = std::filesystem::absolute(path).lexically_normal();
+            if (!joined.empty())
+                joined += '+';
+            joined += path.string();
+            start = end + 1;
+        }
+        value = joined;
+    }
+    return spec;
+}
+
+// The canonical spec with each data file named by its content ("data=sha256:..."), not its path:
+// what a problem's runs depend on.
+std::string content_identity(Spec spec, const std::vector<DataFile>& files) {
+    if (files.empty())
+        return spec.canonical();
+    std::string hashes;
+    for (const auto& file : files)
+        hashes.append(hashes.empty() ? "sha256:" : "+sha256:").append(file.sha256);
+    for (auto& [key, value] : spec.parameters)
+        if (key == "data")
+            value = hashes;
+    return spec.canonical();
+}
+
 // Expands the problem specs (grids, then ranges), validates and builds each problem.
 void prepare_problems(const Study& study, const ProblemRegistry& registry, PreparedStudy& prepared,
                       std::vector<std::string>& errors) {
@@ -172,7 +210,7 @@ void prepare_problems(const Study& study, const ProblemRegistry& registry, Prepa
                 add_lines(errors, origin, std::string("problem ") + e.what());
                 continue;
             }
-            prepared.study.problems.push_back(written.canonical());
+            prepared.study.problems.push_back(with_absolute_data_paths(written).canonical());
             std::vector<Spec> expanded;
             try {
                 // Canonical order first, so that `f=1-3,i=1-2` and `i=1-2,f=1-3` number runs alike.
@@ -193,6 +231,8 @@ void prepare_problems(const Study& study, const ProblemRegistry& registry, Prepa
                     where_full[full] = canonical;
                     prepared.problems.push_back(registry.create(one));
                     prepared.problem_specs.push_back(canonical);
+                    prepared.problem_identities.push_back(
+                        content_identity(Spec::parse(canonical), prepared.problems.back()->data_files()));
                 } catch (const std::exception& e) {
                     add_lines(errors, origin, e.what());
                 }
@@ -264,8 +304,8 @@ RunRequest PreparedStudy::request(std::int64_t run_id) const {
     r.run_index = run_index;
     const auto index = static_cast<std::uint64_t>(run_index);
     r.seed = study.seeds == SeedMode::common
-                 ? derive_seed(study.seed, problem_specs[p], index)
-                 : derive_seed(study.seed, algorithm_specs[a], problem_specs[p], index);
+                 ? derive_seed(study.seed, problem_identities[p], index)
+                 : derive_seed(study.seed, algorithm_specs[a], problem_identities[p], index);
     r.budget = study.budgets[b];
     r.budget_text = budget_texts[b];
     return r;

@@ -3,6 +3,9 @@
 // a preset); prepare_study() checks all of it at once, expands grids and ranges, and builds each
 // optimiser and problem once, to be shared read-only by all their runs.
 //
+// Paths in `data=` are made absolute in `study.problems` (what study.ini stores), so a study
+// file works from any directory; problem_specs keep them as written.
+//
 // Run numbering is fixed: run_id = ((budget * problems + problem) * algorithms + algorithm) * runs
 // + run index, in the order the specs are listed (grids and ranges expanded in place). Seeds come
 // from (study seed, problem, run index) by default — common random numbers: run r on problem p
@@ -65,7 +68,11 @@ struct PreparedStudy {
     std::vector<std::string> algorithm_specs; // canonical (Registry::minimal), one per optimiser
     std::vector<AlgorithmInfo> algorithms;    // spec, label and full spec of each optimiser
     std::vector<std::string> problem_specs;   // canonical (Registry::normalised), ranges expanded
-    std::vector<std::string> budget_texts;    // budget_text of each budget
+    // The same with each data file named by its SHA-256 instead of its path: what the problem's
+    // runs depend on (seeds and run identities use it, so moving a file changes nothing and
+    // editing one is noticed).
+    std::vector<std::string> problem_identities;
+    std::vector<std::string> budget_texts; // budget_text of each budget
     std::vector<std::unique_ptr<Optimizer>> optimizers;
     std::vector<std::unique_ptr<Problem>> problems;
     // Union of the problems' parameter names, in order of first appearance (runs.csv columns).

@@ -11,6 +11,7 @@ packages=(
     libnlopt-cxx-dev                     # NLopt baselines (C++ API)
     libboost-dev                         # Boost.Math: distributions and p-values
     libboost-program-options-dev         # the CLI and study files
+    libssl-dev                           # OpenSSL libcrypto: SHA-256 of data files and run identities
     libgtest-dev libgmock-dev            # GoogleTest
     libbenchmark-dev                     # Google Benchmark
     python3-matplotlib                   # figures (Debian's /usr/bin/python3)

@@ -9,11 +9,13 @@
 #include <fstream>
 #include <istream>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
 
 #include "problems/parameters.hpp"
+#include "problems/sha256.hpp"
 #include "problems/text_excerpt.hpp"
 
 namespace mhb::pmsm {
@@ -188,7 +190,7 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
     return data;
 }
 
-Dataset read_dataset_csv(const std::string& path, const DatasetReadOptions& options) {
+Dataset read_dataset_csv(const std::string& path, const DatasetReadOptions& options, std::string* sha256) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw std::runtime_error(path + ": is a directory, not a dataset file");
@@ -197,7 +199,15 @@ Dataset read_dataset_csv(const std::string& path, const DatasetReadOptions& opti
     if (!in)
         throw std::runtime_error(path + ": cannot open the dataset file (" +
                                  (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
-    return read_dataset_csv(in, path, options);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    if (in.bad())
+        throw std::runtime_error(path + ": reading the dataset file failed");
+    const std::string content = std::move(bytes).str();
+    if (sha256 != nullptr)
+        *sha256 = sha256_hex(content);
+    std::istringstream parsed(content);
+    return read_dataset_csv(parsed, path, options);
 }
 
 void write_dataset_csv(std::ostream& out, const Dataset& data) {

@@ -25,7 +25,9 @@ struct DatasetReadOptions {
     std::size_t min_rows = 4;         // fewer data rows is an error
 };
 
-Dataset read_dataset_csv(const std::string& path, const DatasetReadOptions& options = {});
+// Reads the file once; when `sha256` is given it receives the SHA-256 of exactly the bytes parsed.
+Dataset read_dataset_csv(const std::string& path, const DatasetReadOptions& options = {},
+                         std::string* sha256 = nullptr);
 // `source` names the stream in error messages.
 Dataset read_dataset_csv(std::istream& in, const std::string& source, const DatasetReadOptions& options = {});
 

@@ -51,8 +51,11 @@ std::unique_ptr<Problem> make_pmsm(const ParameterValues& p) {
                                         ") cannot be given with it");
         pmsm::DatasetReadOptions options;
         options.injection_threshold = p.real("id_threshold");
-        return std::make_unique<pmsm::SteadyStateProblem>(pmsm::read_dataset_csv(p.text("data"), options),
-                                                          weights, std::move(box), evaluation);
+        DataFile file{p.text("data"), ""};
+        auto problem = std::make_unique<pmsm::SteadyStateProblem>(
+            pmsm::read_dataset_csv(file.path, options, &file.sha256), weights, std::move(box), evaluation);
+        problem->set_data_files({std::move(file)});
+        return problem;
     }
     pmsm::SimulatorConfig config;
     config.condition.speed_rpm = p.real("speed");

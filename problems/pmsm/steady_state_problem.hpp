@@ -40,6 +40,10 @@ public:
     std::optional<KnownOptimum> known_optimum() const override;
     std::vector<std::string> parameter_names() const override { return {"Rs", "Ld", "Lq", "psi"}; }
     std::optional<Eigen::VectorXd> true_parameters() const override;
+    std::vector<DataFile> data_files() const override { return files_; }
+
+    // Names the files the dataset was read from (the family does, for `data=`).
+    void set_data_files(std::vector<DataFile> files) { files_ = std::move(files); }
 
     [[nodiscard]] const SteadyStateData& samples() const { return samples_; }
     [[nodiscard]] const LeastSquaresResult& least_squares() const { return least_squares_; }
@@ -51,6 +55,7 @@ private:
     ExpandedFitness expanded_;
     bool direct_ = false;
     std::optional<Eigen::Vector4d> truth_;
+    std::vector<DataFile> files_;
 };
 
 } // namespace mhb::pmsm

@@ -15,6 +15,7 @@
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/context.hpp"
 #include "runner/parallel_runner.hpp"
+#include "runner/run_identity.hpp"
 #include "runner/shards.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
@@ -145,8 +146,9 @@ int run_merge_command(const std::vector<std::string>& args) {
     for (const auto& [index, shard] : by_index)
         context += " " + shard->dir.string();
     context += "\nshards = " + std::to_string(first.spec.count) + '\n';
-    StudyWriter writer(out, first.data.study_text, context, prepared.parameter_columns,
-                       vm["overwrite"].as<bool>(), prepared.algorithms);
+    StudyWriter writer(out, first.data.study_text, context + context_data_files(prepared.problems),
+                       prepared.parameter_columns, vm["overwrite"].as<bool>(), prepared.algorithms,
+                       study_run_keys(prepared));
     for (const auto& [index, shard] : by_index)
         for (const auto& record : shard->data.runs) {
             const auto wall = shard->data.wall_seconds.find(record.run_id);

@@ -27,6 +27,7 @@
 #include "runner/dry_run.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/progress.hpp"
+#include "runner/run_identity.hpp"
 #include "runner/shards.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
@@ -187,37 +188,33 @@ void apply_options(const po::variables_map& vm, Study& study, std::vector<std::s
 
 // The summary on stdout (unless quiet) and, whatever quiet says, failed runs on stderr: how many,
 // and the first messages. Returns the number of failed runs and the total.
-std::pair<std::int64_t, std::int64_t> report_outcome(const StudyData& data, const RunnerOutcome& outcome,
-                                                     double wall_seconds, bool quiet) {
-    std::int64_t failed = 0;
-    std::int64_t evaluations = 0;
-    std::vector<const RunRecord*> failures;
-    for (const auto& r : data.runs) {
-        evaluations += r.evaluations;
-        if (!r.ok) {
-            ++failed;
-            if (failures.size() < 3)
-                failures.push_back(&r);
-        }
-    }
-    const auto total = static_cast<std::int64_t>(data.runs.size());
+std::pair<std::int64_t, std::int64_t> report_outcome(const StudySummary& summary,
+                                                     const std::filesystem::path& dir,
+                                                     const RunnerOutcome& outcome, double wall_seconds,
+                                                     bool quiet) {
+    const std::int64_t failed = summary.failed;
+    const std::int64_t total = summary.runs;
     if (!quiet) {
         char line[256];
         std::snprintf(line, sizeof line, "%lld runs (%lld failed), %lld evaluations, %.3g s wall",
                       static_cast<long long>(total), static_cast<long long>(failed),
-                      static_cast<long long>(evaluations), wall_seconds);
+                      static_cast<long long>(summary.evaluations), wall_seconds);
         std::cout << "study finished: " << line;
         if (outcome.resumed > 0)
-            std::cout << " (" << outcome.resumed << " runs resumed from an earlier session)";
-        std::cout << "\nresults in " << data.directory.string() << '\n';
+            std::cout << " (" << outcome.total - outcome.resumed << " run now, " << outcome.resumed
+                      << " found in the store)";
+        std::cout << "\nresults in " << dir.string() << '\n';
     }
     if (failed > 0) {
         std::cerr << "mhbench run: " << failed << " of " << total << " runs failed"
                   << (failed == total ? " (all of them)" : "") << "; each carries its message in "
-                  << (data.directory / StudyFiles::runs).string() << " (column 'message'). The first:\n";
-        for (const auto* r : failures)
-            std::cerr << "  run " << r->run_id << " (" << r->algorithm << " on " << r->problem << ", run "
-                      << r->run_index << "): " << r->message << '\n';
+                  << (dir / StudyFiles::runs).string() << " (column 'message'). The first:\n";
+        for (const auto& r : summary.first_failures) {
+            std::string message = r.message; // one line each, as runs.csv shows it
+            std::replace(message.begin(), message.end(), '\n', ' ');
+            std::cerr << "  run " << r.run_id << " (" << r.algorithm << " on " << r.problem << ", run "
+                      << r.run_index << "): " << message << '\n';
+        }
     }
     return {failed, total};
 }
@@ -295,14 +292,14 @@ int run_run_command(const std::vector<std::string>& args) {
     // the same shard, and `mhbench merge` can check the set.
     const std::string shard_line = shard ? "shard = " + shard_text(*shard) + "\n" : "";
     const std::filesystem::path shard_file = dir / StudyFiles::shard;
-    if (!vm["overwrite"].as<bool>() && std::filesystem::exists(dir / StudyFiles::journal)) {
+    if (!vm["overwrite"].as<bool>() && std::filesystem::exists(dir / StudyFiles::store)) {
         const std::string previous = std::filesystem::exists(shard_file) ? read_whole_file(shard_file) : "";
         if (previous != shard_line) {
             const auto what = [](const std::string& line) {
                 return line.empty() ? std::string("the whole study")
                                     : "shard " + line.substr(8, line.size() - 9);
             };
-            std::cerr << "mhbench run: " << dir.string() << ": holds an unfinished run of " << what(previous)
+            std::cerr << "mhbench run: " << dir.string() << ": holds the runs of " << what(previous)
                       << ", not of " << what(shard_line) << "; choose another --out or pass --overwrite\n";
             return exit_failure;
         }
@@ -312,8 +309,11 @@ int run_run_command(const std::vector<std::string>& args) {
         shard_runs = shard_run_ids(*prepared, shard->count)[static_cast<std::size_t>(shard->index - 1)];
     // From here on Ctrl-C means "stop after the runs under way"; before, it just ends the process.
     const StopSignals signals;
-    StudyWriter writer(dir, study_ini(prepared->study), context_ini(threads, command_line),
-                       prepared->parameter_columns, vm["overwrite"].as<bool>(), prepared->algorithms);
+    std::string context = context_ini(threads, command_line) + context_data_files(prepared->problems);
+    if (shard)
+        context += "shard = " + shard_text(*shard) + '\n';
+    StudyWriter writer(dir, study_ini(prepared->study), context, prepared->parameter_columns,
+                       vm["overwrite"].as<bool>(), prepared->algorithms, study_run_keys(*prepared));
     if (shard)
         write_file_atomically(shard_file, shard_line);
     else
@@ -349,8 +349,7 @@ int run_run_command(const std::vector<std::string>& args) {
                   << dir.string() << "; run the same command again to resume\n";
         return exit_interrupted;
     }
-    const StudyData data = load_study(dir);
-    const auto [failed, total] = report_outcome(data, outcome, wall.count(), quiet);
+    const auto [failed, total] = report_outcome(writer.summary(), dir, outcome, wall.count(), quiet);
     if (failed == total && total > 0) // nothing to report on, and nothing a script should take for a result
         return exit_failure;
     if (shard) { // a shard is part of a study: its report comes after the merge
@@ -368,7 +367,7 @@ int run_run_command(const std::vector<std::string>& args) {
     std::ostringstream discarded;
     if (!quiet)
         std::cout << '\n';
-    build_report(data, report, quiet ? discarded : std::cout);
+    build_report(load_study(dir), report, quiet ? discarded : std::cout);
     return exit_ok;
 }
 

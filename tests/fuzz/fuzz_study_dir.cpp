@@ -1,11 +1,11 @@
 // Fuzzes the study-directory readers (results/store.hpp): the input is cut into files of a fresh
-// temporary directory, then load_study reads it; a directory with a journal and no runs.csv is
-// also resumed by a StudyWriter (load_journal), finished and read back. Bad files must give
+// temporary directory, then load_study reads it; a directory with store.bin and no runs.csv is
+// also resumed by a StudyWriter (reading store.bin), finished and read back. Bad files must give
 // std::runtime_error, never a crash.
 //
 // Input: parts separated by the byte 0x1E; a part's first byte names its file ('0'..'9', or any
 // byte modulo 10: study.ini, context.ini, algorithms.csv, runs.csv, curves.csv, checkpoints.csv,
-// trajectories.csv, timings.csv, journal.txt, .mhbench-study), the rest is its content. Nothing is written
+// trajectories.csv, timings.csv, store.bin, .mhbench-study), the rest is its content. Nothing is written
 // outside the directory, which is emptied for each input and removed at exit.
 #include <algorithm>
 #include <array>
@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 constexpr std::array<const char*, 10> file_names = {
     mhb::StudyFiles::study,        mhb::StudyFiles::context, mhb::StudyFiles::algorithms,
     mhb::StudyFiles::runs,         mhb::StudyFiles::curves,  mhb::StudyFiles::checkpoints,
-    mhb::StudyFiles::trajectories, mhb::StudyFiles::timings, mhb::StudyFiles::journal,
+    mhb::StudyFiles::trajectories, mhb::StudyFiles::timings, mhb::StudyFiles::store,
     mhb::StudyFiles::marker};
 
 // One scratch directory per process, under $TMPDIR, made with mkdtemp and removed at exit.
@@ -98,9 +98,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)mhb::load_study(dir);
     } catch (const std::runtime_error&) {
     }
-    if (!fs::exists(dir / mhb::StudyFiles::journal) || fs::exists(dir / mhb::StudyFiles::runs))
+    if (!fs::exists(dir / mhb::StudyFiles::store) || fs::exists(dir / mhb::StudyFiles::runs))
         return 0;
-    // An unfinished study: resumed from its journal, finished, and read back.
+    // An unfinished study: resumed from its store, finished, and read back.
     const std::string study_text = read(dir / mhb::StudyFiles::study);
     std::vector<std::string> parameter_columns; // those of trajectories.csv's header, if any
     const std::string trajectories = read(dir / mhb::StudyFiles::trajectories);

@@ -177,12 +177,14 @@ std::vector<BadInput> catalogue() {
                "files are left alone: choose a new or empty --out"})},
         {"", "run --algorithms random-search --problems sphere --iterations 5 --out /sys/mhbench-test", 1,
          one_line("mhbench run: /sys/mhbench-test: cannot create the output directory (")}, // EPERM, EROFS...
-        // An unfinished study whose journal cannot be rewritten on resume: the OS's reason, no .tmp.
-        {study_copy + " && rm s/runs.csv && mkdir s/journal.txt",
+        // An unfinished study whose store cannot be read on resume: the OS's reason.
+        {study_copy + " && rm s/runs.csv s/store.bin && mkdir s/store.bin",
          "run --study smoke --runs 2 --evaluations 200 --no-report --quiet --out s", 1,
-         says({"mhbench run: s/journal.txt: cannot be written (Is a directory)"}), "s"},
-        {study_copy, "run --study smoke --seed 5 --out s", 1,
-         says({"mhbench run: s: holds a finished study; choose another --out or pass --overwrite"})},
+         says({"mhbench run: s/store.bin: cannot be read (Is a directory)"}), "s"},
+        {study_copy, "run --study smoke --runs 2 --evaluations 200 --seed 5 --out s", 1,
+         says({"mhbench run: s: 2 stored runs would change:",
+               "  seed = 5, but the stored runs were made with seed = 1",
+               "pass --overwrite to discard the stored runs and start again, or choose another --out"})},
         {"", "run --algorithms lshade:r_ninit=1 --problems sphere:dim=2 --evaluations 100 --runs 2 --quiet --out s", 1,
          mentions("2 of 2 runs failed (all of them)"), "s"},
 
@@ -311,9 +313,9 @@ std::vector<BadInput> catalogue() {
         {"", "report nowhere", 1, says({"mhbench report: nowhere: is not a directory"})},
         {"mkdir d && echo mine > d/notes.txt", "report d", 1,
          says({"mhbench report: d: is not a mhbench study directory (no .mhbench-study, study.ini or runs.csv)"})},
-        {study_copy + " && mv s/runs.csv s/journal.txt", "report s", 1,
-         says({"mhbench report: s: holds an unfinished study (journal.txt but no runs.csv); run the same command "
-               "again to resume it"})},
+        {study_copy + " && rm s/runs.csv", "report s", 1,
+         says({"mhbench report: s: holds an unfinished study (no runs.csv yet); run the same command again to "
+               "complete it"})},
         {study_copy + " && head -c -7 $F/study/runs.csv > s/runs.csv", "report s --no-figures", 1, one_line("s/runs.csv, line ")},
         {study_copy + " && sed -i '2s/,ok,/,maybe,/' s/runs.csv", "report s --no-figures", 1, one_line("s/runs.csv")},
         {study_copy + " && sed -i '2s/^0,/zero,/' s/runs.csv", "report s --no-figures", 1,

@@ -211,7 +211,7 @@ TEST(CliRun, BadInputGivesOneLinePerErrorNonZeroExitAndNoRunsCsv) {
     }
 }
 
-TEST(CliRun, AFinishedStudyIsKeptUnlessOverwriteIsGiven) {
+TEST(CliRun, AFinishedStudyRefusesAChangedSeedUnlessOverwriteIsGiven) {
     const fs::path dir = fresh("finished");
     const std::string args =
         "run --algorithms random-search --problems sphere:dim=2 --runs 2 --iterations 3 --no-report --out " +
@@ -221,8 +221,10 @@ TEST(CliRun, AFinishedStudyIsKeptUnlessOverwriteIsGiven) {
     const Result again = mhbench(args + " --seed 5");
     EXPECT_NE(again.exit_code, 0);
     EXPECT_EQ(lines_of(again.err),
-              std::vector<std::string>{"mhbench run: " + dir.string() +
-                                       ": holds a finished study; choose another --out or pass --overwrite"});
+              (std::vector<std::string>{
+                  "mhbench run: " + dir.string() + ": 2 stored runs would change:",
+                  "  seed = 5, but the stored runs were made with seed = 1",
+                  "pass --overwrite to discard the stored runs and start again, or choose another --out"}));
     EXPECT_EQ(read_text(dir / "runs.csv"), runs); // untouched
     ASSERT_EQ(mhbench(args + " --seed 5 --overwrite").exit_code, 0);
     EXPECT_NE(read_text(dir / "runs.csv"), runs);
@@ -237,8 +239,8 @@ TEST(CliRun, InterruptKeepsFinishedRunsAndTheSameCommandResumes) {
         "' run --no-report --algorithms random-search:batch=1000 --problems sphere:dim=5 --runs 1000 "
         "--evaluations 200000 --threads 1 --out " +
         dir.string();
-    // SIGINT as soon as the journal grows, i.e. once this session has journaled a run.
-    const std::string journal = (dir / "journal.txt").string();
+    // SIGINT as soon as the store grows, i.e. once this session has stored a run.
+    const std::string journal = (dir / "store.bin").string();
     const std::string interrupt = "s0=$(cat " + journal + " 2>/dev/null | wc -c); " + command +
                                   " & pid=$!; i=0; while [ \"$(cat " + journal +
                                   " 2>/dev/null | wc -c)\" -le \"$s0\" ] && [ $i -lt 600 ]; do sleep 0.05; "
@@ -255,14 +257,14 @@ TEST(CliRun, InterruptKeepsFinishedRunsAndTheSameCommandResumes) {
                                        "; run the same command again to resume"});
     EXPECT_GE(kept_of(first.err), 1);
     EXPECT_FALSE(fs::exists(dir / "runs.csv"));
-    EXPECT_TRUE(fs::exists(dir / "journal.txt"));
+    EXPECT_TRUE(fs::exists(dir / "store.bin"));
 
     // The same command again picks up where it stopped: the count only grows.
     const Result second = run_shell(interrupt);
     EXPECT_EQ(second.exit_code, 130) << second.err;
     EXPECT_GE(kept_of(second.err), kept_of(first.err) + 1);
     EXPECT_FALSE(fs::exists(dir / "runs.csv"));
-    fs::remove_all(dir); // 1000-run journals are not worth keeping in /tmp
+    fs::remove_all(dir); // 1000-run stores are not worth keeping in /tmp
 }
 
 TEST(CliList, ListsRandomSearchWithItsParameter) {

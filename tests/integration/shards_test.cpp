@@ -115,8 +115,8 @@ TEST(Shards, MergeRefusesOtherStudiesDuplicatesMissingAndUnfinishedShards) {
                                                        "the directories of mhbench run --shard i/n\n");
     EXPECT_EQ(merge(a).exit_code, 1);
     EXPECT_FALSE(fs::exists(fresh("out") / "runs.csv"));
-    // An unfinished shard (its runs.csv gone, a journal left) is named as such.
-    fs::rename(shards[1] / "runs.csv", shards[1] / "journal.txt");
+    // An unfinished shard (its runs.csv gone, its store left) is named as such.
+    fs::remove(shards[1] / "runs.csv");
     const auto unfinished = merge(a + " " + b);
     EXPECT_EQ(unfinished.exit_code, 1);
     EXPECT_NE(unfinished.err.find(b + ": holds an unfinished study"), std::string::npos) << unfinished.err;
@@ -124,7 +124,7 @@ TEST(Shards, MergeRefusesOtherStudiesDuplicatesMissingAndUnfinishedShards) {
     const auto wrong = run_mhbench("run " + study_options + "--shard 1/2 --out " + b);
     EXPECT_EQ(wrong.exit_code, 1);
     EXPECT_EQ(wrong.err, "mhbench run: " + b +
-                             ": holds an unfinished run of shard 2/2, not of shard 1/2; choose "
+                             ": holds the runs of shard 2/2, not of shard 1/2; choose "
                              "another --out or pass --overwrite\n");
 }
 

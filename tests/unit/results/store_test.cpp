@@ -83,7 +83,7 @@ TEST(Store, RoundTripsRecordsExactlyAndSortsByRunId) {
         w.append(failed, 0.0);
         w.finish();
     }
-    EXPECT_FALSE(fs::exists(dir / "journal.txt"));
+    EXPECT_TRUE(fs::exists(dir / "store.bin")); // kept: a finished study can grow
     const StudyData data = load_study(dir);
     ASSERT_EQ(data.runs.size(), 4u);
     EXPECT_EQ(data.parameter_columns, (std::vector<std::string>{"Rs", "Ld", "Lq", "psi"}));
@@ -116,18 +116,31 @@ TEST(Store, ResumesAnInterruptedStudyKeepingFinishedRunsOnly) {
         w.append(make_record(0), 0.1);
         w.append(make_record(1), 0.1);
         // No finish(): the process is "killed" here. Simulate a half-written third block.
-        std::ofstream(dir / "journal.txt", std::ios::app) << "begin 2\nR 2,tlbo,sph";
+        std::ofstream(dir / "store.bin", std::ios::binary | std::ios::app)
+            << "MHBRUN3\n\x40\0\0\0\0\0\0\0abc";
     }
     EXPECT_FALSE(fs::exists(dir / "runs.csv"));
     EXPECT_THROW(load_study(dir), std::runtime_error); // unfinished: not a study to report on
-    EXPECT_THROW(StudyWriter(dir, "study B\n", "", {}, false), std::runtime_error);
-    StudyWriter w(dir, "study A\n", "", {}, false);
-    EXPECT_EQ(w.completed(), (std::set<std::int64_t>{0, 1}));
-    w.append(make_record(2), 0.1);
-    w.finish();
+    const auto stored = fs::file_size(dir / "store.bin");
+    // Without run keys, runs belong to their study text: another study shares none of them.
+    EXPECT_TRUE(StudyWriter(dir, "study B\n", "", {}, false).completed().empty());
+    EXPECT_LT(fs::file_size(dir / "store.bin"), stored); // the half-written block is cut off
+    {
+        StudyWriter w(dir, "study A\n", "", {}, false);
+        EXPECT_EQ(w.completed(), (std::set<std::int64_t>{0, 1}));
+        w.append(make_record(2), 0.1);
+        w.finish();
+    }
     EXPECT_EQ(load_study(dir).runs.size(), 3u);
-    EXPECT_THROW(StudyWriter(dir, "study A\n", "", {}, false), std::runtime_error); // finished
-    EXPECT_NO_THROW(StudyWriter(dir, "study A\n", "", {}, true));
+    const std::string runs = read_whole_file(dir / "runs.csv");
+    {
+        // Finished: the same study again re-renders the same files from the store.
+        StudyWriter w(dir, "study A\n", "", {}, false);
+        EXPECT_EQ(w.completed(), (std::set<std::int64_t>{0, 1, 2}));
+        w.finish();
+        EXPECT_EQ(read_whole_file(dir / "runs.csv"), runs);
+    }
+    EXPECT_TRUE(StudyWriter(dir, "study A\n", "", {}, true).completed().empty()); // overwrite: a fresh store
 }
 
 TEST(Store, DamagedDirectoriesGiveErrorsNamingTheFile) {

@@ -110,14 +110,14 @@ TEST(ParallelRunner, CancelledAfterKRunsThenResumedMatchesAnUninterruptedStudy) 
     EXPECT_TRUE(first.interrupted);
     EXPECT_EQ(first.kept, 5);
     EXPECT_FALSE(fs::exists(dir / "runs.csv")); // not a finished study
-    EXPECT_TRUE(fs::exists(dir / "journal.txt"));
+    EXPECT_TRUE(fs::exists(dir / "store.bin"));
     EXPECT_THROW((void)load_study(dir), std::runtime_error);
 
     const RunnerOutcome second = run_into(dir, study, plain); // "run the same command again"
     EXPECT_FALSE(second.interrupted);
     EXPECT_EQ(second.resumed, 5);
     EXPECT_EQ(second.kept, 16);
-    EXPECT_FALSE(fs::exists(dir / "journal.txt"));
+    EXPECT_TRUE(fs::exists(dir / "runs.csv"));
     for (const char* name : deterministic_files)
         EXPECT_EQ(read_text(reference / name), read_text(dir / name)) << name;
 }

@@ -1,0 +1,112 @@
+#include "runner/run_identity.hpp"
+
+#include <map>
+#include <sstream>
+
+#include "problems/sha256.hpp"
+
+namespace mhb {
+namespace {
+
+// "name = value" lines as a map (a value may hold " = ").
+std::map<std::string, std::string> lines_of(const std::string& text) {
+    std::map<std::string, std::string> values;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        const auto eq = line.find(" = ");
+        if (eq != std::string::npos)
+            values[line.substr(0, eq)] = line.substr(eq + 3);
+    }
+    return values;
+}
+
+std::string value_or(const std::map<std::string, std::string>& values, const std::string& key) {
+    const auto found = values.find(key);
+    return found == values.end() ? std::string("(none)") : found->second;
+}
+
+} // namespace
+
+RunKey run_key(const PreparedStudy& study, std::int64_t run_id) {
+    const RunRequest request = study.request(run_id);
+    const auto cell = run_id / study.study.runs;
+    const auto a = static_cast<std::size_t>(cell % static_cast<std::int64_t>(study.optimizers.size()));
+    const auto p = static_cast<std::size_t>((cell / static_cast<std::int64_t>(study.optimizers.size())) %
+                                            static_cast<std::int64_t>(study.problems.size()));
+    RunKey key;
+    key.algorithm = request.algorithm_spec;
+    key.problem = request.problem_spec;
+    key.facts =
+        "format = " + std::to_string(store_format_version) + '\n' + "algorithm = " + request.algorithm_spec +
+        '\n' + "problem = " + study.problem_identities[p] + '\n' + "budget = " + request.budget_text + '\n' +
+        "run = " + std::to_string(request.run_index) + '\n' + "seed = " + std::to_string(request.seed) + '\n';
+    key.identity = sha256_hex(key.facts);
+    const std::string& label =
+        a < study.algorithms.size() ? study.algorithms[a].label : request.algorithm_spec;
+    key.slot = label + " | " + request.problem_spec + " | " + request.budget_text + " | " +
+               std::to_string(request.run_index);
+    key.notes = "label = " + label + '\n' + "problem as written = " + request.problem_spec + '\n' +
+                "study seed = " + std::to_string(study.study.seed) + '\n' +
+                "seeds = " + std::string(seed_mode_name(study.study.seeds)) + '\n';
+    const auto files = study.problems[p]->data_files();
+    for (std::size_t i = 0; i < files.size(); ++i)
+        key.notes +=
+            "data file " + std::to_string(i + 1) + " = " + files[i].sha256 + " " + files[i].path + '\n';
+    return key;
+}
+
+StudyRunKeys study_run_keys(const PreparedStudy& study) {
+    StudyRunKeys keys;
+    keys.count = study.run_count();
+    keys.key = [&study](std::int64_t run_id) { return run_key(study, run_id); };
+    keys.describe_change = describe_run_change;
+    return keys;
+}
+
+std::string describe_run_change(const RunKey& stored, const RunKey& wanted) {
+    const auto old_facts = lines_of(stored.facts);
+    const auto new_facts = lines_of(wanted.facts);
+    const auto old_notes = lines_of(stored.notes);
+    const auto new_notes = lines_of(wanted.notes);
+    const std::string problem = value_or(new_notes, "problem as written");
+    if (value_or(old_facts, "format") != value_or(new_facts, "format"))
+        return "the stored runs have record format " + value_or(old_facts, "format") +
+               ", this mhbench writes " + value_or(new_facts, "format");
+    if (value_or(old_facts, "problem") != value_or(new_facts, "problem")) {
+        // A data file's content (its path is the same: the slot matched).
+        for (int i = 1;; ++i) {
+            const std::string key = "data file " + std::to_string(i);
+            if (old_notes.count(key) == 0 || new_notes.count(key) == 0)
+                break;
+            const std::string before = old_notes.at(key).substr(0, old_notes.at(key).find(' '));
+            const std::string after = new_notes.at(key).substr(0, new_notes.at(key).find(' '));
+            if (before == after)
+                continue;
+            // With several files, say which one.
+            const bool several = new_notes.count("data file 2") != 0;
+            return problem + ": the file " +
+                   (several ? new_notes.at(key).substr(after.size() + 1) + " " : "") +
+                   "changed since the study started (sha256 " + short_hash(before) + " -> " +
+                   short_hash(after) + ")";
+        }
+        return problem + ": the problem changed (" + value_or(old_facts, "problem") + " -> " +
+               value_or(new_facts, "problem") + ")";
+    }
+    if (value_or(old_facts, "algorithm") != value_or(new_facts, "algorithm"))
+        return "algorithm '" + value_or(new_notes, "label") + "': " + value_or(old_facts, "algorithm") +
+               " -> " + value_or(new_facts, "algorithm");
+    if (value_or(old_notes, "study seed") != value_or(new_notes, "study seed"))
+        return "seed = " + value_or(new_notes, "study seed") +
+               ", but the stored runs were made with seed = " + value_or(old_notes, "study seed");
+    if (value_or(old_notes, "seeds") != value_or(new_notes, "seeds"))
+        return "seeds = " + value_or(new_notes, "seeds") +
+               ", but the stored runs were made with seeds = " + value_or(old_notes, "seeds");
+    const auto flat = [](std::string text) {
+        for (char& c : text)
+            c = c == '\n' ? ';' : c;
+        return text;
+    };
+    return "run " + wanted.slot + ": " + flat(stored.facts) + " -> " + flat(wanted.facts);
+}
+
+} // namespace mhb
