@@ -29,6 +29,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "results/run_record.hpp"
@@ -76,6 +77,8 @@ struct RunKey {
 struct StudyRunKeys {
     std::int64_t count = 0;
     std::function<RunKey(std::int64_t run_id)> key;
+    // The canonical algorithm and problem specs of a run (RunKey's), cheaper than key().
+    std::function<std::pair<std::string, std::string>(std::int64_t run_id)> names;
     // One line saying what differs between a stored run and the wanted one of the same slot.
     std::function<std::string(const RunKey& stored, const RunKey& wanted)> describe_change;
 };
@@ -146,7 +149,9 @@ private:
     std::string unkeyed_suffix_; // of identities without keys: " of study <hash of the study text>"
     std::mutex mutex_;
     std::ofstream store_;
-    std::map<std::string, Stored> index_; // identity -> where its newest block is
+    std::uint64_t store_size_ = 0;                  // bytes in store.bin: where the next block goes
+    std::unordered_map<std::string, Stored> index_; // identity -> where its newest block is
+    std::vector<std::string> identities_;           // of the study's runs, by run_id (with keys)
     std::set<std::int64_t> completed_;
     std::int64_t unused_stored_ = 0;
     StudySummary summary_;

@@ -3,9 +3,16 @@
 #include <cerrno>
 #include <charconv>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
+#include <memory>
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/parallel_pipeline.h>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
+#include <unistd.h>
 
 #include "results/csv.hpp"
 #include "results/record_codec.hpp"
@@ -109,6 +116,38 @@ std::string store_block(const RunKey& key, const RunRecord& record, double wall_
     size.u64(payload.bytes().size());
     return std::string(block_magic) + size.bytes() + payload.bytes() + std::string(block_end);
 }
+
+// Reads payloads back by position (pread: no shared file offset, no stream buffer to refill for
+// each run). The store is not mapped into memory, so that resident memory stays small.
+class StoreReader {
+public:
+    explicit StoreReader(const fs::path& path)
+        : path_(path), fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {
+        if (fd_ < 0)
+            throw std::runtime_error(path.string() + ": cannot be read (" + std::strerror(errno) + ")");
+    }
+    ~StoreReader() { ::close(fd_); }
+    StoreReader(const StoreReader&) = delete;
+    StoreReader& operator=(const StoreReader&) = delete;
+
+    void read(std::uint64_t offset, std::uint64_t size, std::string& payload) const {
+        payload.resize(static_cast<std::size_t>(size));
+        std::size_t done = 0;
+        while (done < payload.size()) {
+            const ssize_t n =
+                ::pread(fd_, payload.data() + done, payload.size() - done, static_cast<off_t>(offset + done));
+            if (n <= 0)
+                throw std::runtime_error(
+                    path_.string() + ": cannot read a stored run back (" +
+                    (n < 0 ? std::strerror(errno) : "the file is shorter than its index") + ")");
+            done += static_cast<std::size_t>(n);
+        }
+    }
+
+private:
+    fs::path path_;
+    int fd_;
+};
 
 } // namespace
 
@@ -235,34 +274,46 @@ void StudyWriter::load_store() {
     // Cut a half-written last block off, so that new blocks never follow it.
     if (file_size != good_end)
         fs::resize_file(path, good_end, ec);
+    store_size_ = good_end;
     if (ec)
         throw std::runtime_error(path.string() + ": cannot be repaired (" + ec.message() + ")");
 }
 
 void StudyWriter::check_changes(bool overwrite) {
-    std::map<std::string, std::string> slot_identity; // of the stored runs
+    std::unordered_map<std::string_view, const std::string*> slot_identity; // of the stored runs
     for (const auto& [identity, stored] : index_)
-        slot_identity[stored.slot] = identity;
-    std::set<std::string> used;
+        slot_identity[stored.slot] = &identity;
+    std::int64_t used = 0;
     std::vector<std::string> changes;
     std::int64_t changed_runs = 0;
     const std::int64_t count = keys_ ? keys_->count : 0;
+    // Every run's key, in parallel (a key costs a SHA-256; a study may have 10^6 runs): its
+    // identity, and whether a stored run sits in its slot with another identity.
+    identities_.resize(static_cast<std::size_t>(count));
+    std::vector<char> slot_taken(static_cast<std::size_t>(count), 0);
+    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, count, 256), [&](const auto& range) {
+        for (std::int64_t id = range.begin(); id != range.end(); ++id) {
+            RunKey wanted = keys_->key(id);
+            const auto i = static_cast<std::size_t>(id);
+            if (index_.count(wanted.identity) == 0 && slot_identity.count(wanted.slot) != 0)
+                slot_taken[i] = 1;
+            identities_[i] = std::move(wanted.identity);
+        }
+    });
     for (std::int64_t id = 0; id < count; ++id) {
-        const RunKey wanted = keys_->key(id);
-        if (index_.count(wanted.identity) != 0) {
-            completed_.insert(id);
-            used.insert(wanted.identity);
+        const auto i = static_cast<std::size_t>(id);
+        if (index_.count(identities_[i]) != 0) {
+            completed_.insert(completed_.end(), id);
+            ++used; // identities of a study are distinct: they differ in algorithm, problem, budget or run
             continue;
         }
-        const auto same_slot = slot_identity.find(wanted.slot);
-        if (same_slot == slot_identity.end())
+        if (slot_taken[i] == 0)
             continue;
         ++changed_runs;
-        const Stored& stored = index_.at(same_slot->second);
-        std::ifstream in(dir_ / StudyFiles::store, std::ios::binary);
-        std::string payload(static_cast<std::size_t>(stored.size), '\0');
-        in.seekg(static_cast<std::streamoff>(stored.offset));
-        in.read(payload.data(), static_cast<std::streamsize>(payload.size()));
+        const RunKey wanted = keys_->key(id);
+        const Stored& stored = index_.at(*slot_identity.at(wanted.slot));
+        std::string payload;
+        StoreReader(dir_ / StudyFiles::store).read(stored.offset, stored.size, payload);
         ByteReader reader(payload, (dir_ / StudyFiles::store).string());
         RunKey old;
         old.identity = reader.text();
@@ -286,7 +337,7 @@ void StudyWriter::check_changes(bool overwrite) {
         }
         return;
     }
-    unused_stored_ = static_cast<std::int64_t>(index_.size() - used.size());
+    unused_stored_ = static_cast<std::int64_t>(index_.size()) - used;
     if (changes.empty() || overwrite)
         return;
     std::string message = dir_.string() + ": " + std::to_string(changed_runs) + " stored run" +
@@ -304,12 +355,13 @@ void StudyWriter::append(const RunRecord& record, double wall_seconds) {
     const RunKey key = key_of(record.run_id, &record);
     const std::string block = store_block(key, record, wall_seconds);
     const std::lock_guard<std::mutex> lock(mutex_);
-    const auto offset = static_cast<std::uint64_t>(store_.tellp());
+    const std::uint64_t offset = store_size_;
     store_.write(block.data(), static_cast<std::streamsize>(block.size()));
     store_.flush();
     if (!store_)
         throw std::runtime_error((dir_ / StudyFiles::store).string() + ": writing failed (" +
                                  std::strerror(errno) + ")");
+    store_size_ += block.size();
     Stored stored;
     stored.offset = offset + block_magic.size() + 8;
     stored.size = block.size() - block_magic.size() - 8 - block_end.size();
@@ -321,7 +373,47 @@ void StudyWriter::append(const RunRecord& record, double wall_seconds) {
 void StudyWriter::finish() {
     const std::lock_guard<std::mutex> lock(mutex_);
     store_.flush();
-    std::ifstream in(dir_ / StudyFiles::store, std::ios::binary);
+    const StoreReader in(dir_ / StudyFiles::store);
+    const auto render_stored = [&](std::int64_t id, std::string& payload, Block& out, StudySummary& summary) {
+        const auto found =
+            index_.find(keys_ ? identities_[static_cast<std::size_t>(id)] : key_of(id, nullptr).identity);
+        if (found == index_.end())
+            return;
+        in.read(found->second.offset, found->second.size, payload);
+        ByteReader reader(payload, (dir_ / StudyFiles::store).string());
+        for (int skipped = 0; skipped < 4; ++skipped) // identity, slot, facts, notes
+            reader.text();
+        DecodedRecord decoded = decode_record(reader);
+        // The record as this study names it: a run found by identity may come from a study that
+        // numbered it differently or read its data file from another path.
+        RunRecord& record = decoded.record;
+        record.run_id = id;
+        if (keys_) {
+            if (keys_->names) {
+                std::tie(record.algorithm, record.problem) = keys_->names(id);
+            } else {
+                const RunKey key = keys_->key(id);
+                record.algorithm = key.algorithm;
+                record.problem = key.problem;
+            }
+        }
+        Block block = render(record, decoded.wall_seconds, parameter_columns_);
+        out.run_line += block.run_line;
+        out.curve_lines += block.curve_lines;
+        out.checkpoint_lines += block.checkpoint_lines;
+        out.trajectory_lines += block.trajectory_lines;
+        out.timing_line += block.timing_line;
+        ++summary.runs;
+        summary.evaluations += record.evaluations;
+        if (!record.ok) {
+            ++summary.failed;
+            if (summary.first_failures.size() < 3) {
+                record.curve.clear();
+                record.checkpoints.clear();
+                summary.first_failures.push_back(std::move(record));
+            }
+        }
+    };
     // Each file is streamed to its temporary name and renamed at the end, runs.csv last.
     struct Output {
         fs::path path;
@@ -354,46 +446,50 @@ void StudyWriter::finish() {
     timings.out << "run_id,wall_seconds\n";
 
     summary_ = StudySummary{};
-    std::string payload;
-    for (const std::int64_t id : completed_) {
-        const RunKey key = key_of(id, nullptr);
-        const auto found = index_.find(key.identity);
-        if (found == index_.end())
-            continue;
-        payload.resize(static_cast<std::size_t>(found->second.size));
-        in.seekg(static_cast<std::streamoff>(found->second.offset));
-        if (!in.read(payload.data(), static_cast<std::streamsize>(payload.size())))
-            throw std::runtime_error((dir_ / StudyFiles::store).string() + ": cannot read run " +
-                                     std::to_string(id) + " back");
-        ByteReader reader(payload, (dir_ / StudyFiles::store).string());
-        for (int skipped = 0; skipped < 4; ++skipped) // identity, slot, facts, notes
-            reader.text();
-        DecodedRecord decoded = decode_record(reader);
-        // The record as this study names it: a run found by identity may come from a study that
-        // numbered it differently or read its data file from another path.
-        RunRecord& record = decoded.record;
-        record.run_id = id;
-        if (keys_) {
-            record.algorithm = key.algorithm;
-            record.problem = key.problem;
-        }
-        const Block block = render(record, decoded.wall_seconds, parameter_columns_);
-        ++summary_.runs;
-        summary_.evaluations += record.evaluations;
-        if (!record.ok) {
-            ++summary_.failed;
-            if (summary_.first_failures.size() < 3) {
-                record.curve.clear();
-                record.checkpoints.clear();
-                summary_.first_failures.push_back(std::move(record));
-            }
-        }
-        runs.out << block.run_line;
-        curves.out << block.curve_lines;
-        checkpoints.out << block.checkpoint_lines;
-        trajectories.out << block.trajectory_lines;
-        timings.out << block.timing_line;
-    }
+    // Records are decoded and rendered in parallel, a chunk of runs at a time, and written in
+    // run_id order: the output is the same bytes as a serial loop's.
+    const std::vector<std::int64_t> ids(completed_.begin(), completed_.end());
+    constexpr std::size_t chunk = 512;
+    struct Rendered {
+        Block text;
+        StudySummary summary;
+    };
+    std::size_t next = 0;
+    tbb::parallel_pipeline(
+        16, tbb::make_filter<void, std::pair<std::size_t, std::size_t>>(
+                tbb::filter_mode::serial_in_order,
+                [&](tbb::flow_control& control) {
+                    if (next >= ids.size()) {
+                        control.stop();
+                        return std::pair<std::size_t, std::size_t>{};
+                    }
+                    const std::size_t first = next;
+                    next = std::min(ids.size(), next + chunk);
+                    return std::pair<std::size_t, std::size_t>{first, next};
+                }) &
+                tbb::make_filter<std::pair<std::size_t, std::size_t>, std::shared_ptr<Rendered>>(
+                    tbb::filter_mode::parallel,
+                    [&](std::pair<std::size_t, std::size_t> span) {
+                        auto out = std::make_shared<Rendered>();
+                        std::string payload;
+                        for (std::size_t k = span.first; k < span.second; ++k)
+                            render_stored(ids[k], payload, out->text, out->summary);
+                        return out;
+                    }) &
+                tbb::make_filter<std::shared_ptr<Rendered>, void>(
+                    tbb::filter_mode::serial_in_order, [&](const std::shared_ptr<Rendered>& part) {
+                        runs.out << part->text.run_line;
+                        curves.out << part->text.curve_lines;
+                        checkpoints.out << part->text.checkpoint_lines;
+                        trajectories.out << part->text.trajectory_lines;
+                        timings.out << part->text.timing_line;
+                        summary_.runs += part->summary.runs;
+                        summary_.failed += part->summary.failed;
+                        summary_.evaluations += part->summary.evaluations;
+                        for (auto& failure : part->summary.first_failures)
+                            if (summary_.first_failures.size() < 3)
+                                summary_.first_failures.push_back(std::move(failure));
+                    }));
     for (Output* o : {&curves, &checkpoints, &trajectories, &timings, &runs}) {
         o->out.close();
         if (!o->out)

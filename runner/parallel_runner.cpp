@@ -67,11 +67,11 @@ RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const R
                 }
             },
             tbb::simple_partitioner());
+        outcome.kept = kept;
+        outcome.interrupted = kept < outcome.total;
+        if (!outcome.interrupted)
+            writer.finish(); // renders in parallel too: under the same cap
     }
-    outcome.kept = kept;
-    outcome.interrupted = kept < outcome.total;
-    if (!outcome.interrupted)
-        writer.finish();
     return outcome;
 }
 

@@ -59,6 +59,13 @@ StudyRunKeys study_run_keys(const PreparedStudy& study) {
     StudyRunKeys keys;
     keys.count = study.run_count();
     keys.key = [&study](std::int64_t run_id) { return run_key(study, run_id); };
+    keys.names = [&study](std::int64_t run_id) {
+        const std::int64_t cell = run_id / study.study.runs;
+        const auto algorithms = static_cast<std::int64_t>(study.optimizers.size());
+        const auto problems = static_cast<std::int64_t>(study.problems.size());
+        return std::make_pair(study.algorithm_specs[static_cast<std::size_t>(cell % algorithms)],
+                              study.problem_specs[static_cast<std::size_t>((cell / algorithms) % problems)]);
+    };
     keys.describe_change = describe_run_change;
     return keys;
 }
