@@ -1,10 +1,10 @@
 #include "results/report.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <stdexcept>
 #include <sys/wait.h>
 
+#include "results/child_process.hpp"
 #include "results/comparison_tables.hpp"
 #include "results/critical_difference.hpp"
 #include "results/csv.hpp"
@@ -21,8 +21,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Single-quoted for /bin/sh (a quote inside becomes '\'').
+// As typed in a shell: as it is when that is safe, else single-quoted (a quote inside becomes '\'').
 std::string shell_quote(const std::string& text) {
+    if (!text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                "0123456789_-+=.,:/@%") == std::string::npos)
+        return text;
     std::string out = "'";
     for (char c : text)
         out += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -51,11 +54,6 @@ std::string latex_document(const std::vector<Table>& tables) {
     return out + "\\end{document}\n";
 }
 
-std::string read_if_exists(const fs::path& path) {
-    std::error_code ec;
-    return fs::exists(path, ec) ? read_whole_file(path) : std::string();
-}
-
 std::vector<std::string> non_empty_lines(const std::string& text) {
     std::vector<std::string> lines;
     std::size_t start = 0;
@@ -69,7 +67,29 @@ std::vector<std::string> non_empty_lines(const std::string& text) {
     return lines;
 }
 
-void draw_figures(const ReportOptions& options, const fs::path& out_dir, std::ostream& console) {
+// The first candidate that can import matplotlib; `interrupted` when a stop came meanwhile.
+std::optional<std::string> find_python(const std::vector<std::string>& candidates, bool& interrupted) {
+    interrupted = false;
+    for (const auto& python : candidates) {
+        const ChildOutcome probe = run_child_process(python, {"-c", "import matplotlib"}, false);
+        if (probe.stop_requested) {
+            interrupted = true;
+            return std::nullopt;
+        }
+        if (probe.exited_with(0))
+            return python;
+    }
+    return std::nullopt;
+}
+
+// The exit status plot_study.py gives when SIGINT or SIGTERM stopped it (as a shell reports Ctrl-C).
+constexpr int plot_exit_interrupted = 130;
+
+enum class Figures { drawn_or_skipped, interrupted };
+
+Figures draw_figures(const ReportOptions& options, const fs::path& out_dir, std::ostream& console) {
+    if (options.stop != nullptr && options.stop->load())
+        return Figures::interrupted;
     const std::string how =
         "install matplotlib (apt install python3-matplotlib) and run mhbench report again, or "
         "run scripts/plot_study.py " +
@@ -77,62 +97,58 @@ void draw_figures(const ReportOptions& options, const fs::path& out_dir, std::os
     if (options.plot_script.empty() || !fs::exists(options.plot_script)) {
         console << "figures skipped: the plotting script " << options.plot_script.string()
                 << " was not found; the tables and curve data are written\n";
-        return;
+        return Figures::drawn_or_skipped;
     }
-    const auto python = find_matplotlib_python(options.python_candidates);
+    bool interrupted = false;
+    const auto python = find_python(options.python_candidates, interrupted);
+    if (interrupted)
+        return Figures::interrupted;
     if (!python) {
         console << "figures skipped: no Python with matplotlib found; " << how << '\n';
-        return;
+        return Figures::drawn_or_skipped;
     }
     // The script's output is collected, not passed through: its notes (what a figure left out) go to
     // the console, a figure that failed is one line on `errors`, and a traceback stays in a log.
     const fs::path figures = out_dir / "figures";
     std::error_code ec;
     fs::create_directories(figures, ec);
-    const fs::path out_file = figures / ".plot_study.stdout";
-    const fs::path err_file = figures / ".plot_study.stderr";
     const fs::path log_file = figures / "plot_study.log";
-    const std::string command = shell_quote(*python) + " " + shell_quote(options.plot_script.string()) + " " +
-                                shell_quote(out_dir.string()) + " >" + shell_quote(out_file.string()) +
-                                " 2>" + shell_quote(err_file.string());
-    const int status = std::system(command.c_str());
-    const std::string out_text = read_if_exists(out_file);
-    const std::string err_text = read_if_exists(err_file);
-    fs::remove(out_file, ec);
-    fs::remove(err_file, ec);
+    const ChildOutcome run =
+        run_child_process(*python, {options.plot_script.string(), out_dir.string()}, true);
     fs::remove(log_file, ec); // a stale log from an earlier report would mislead
-    const bool succeeded = status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    for (const auto& line : non_empty_lines(out_text))
+    if (run.stop_requested || run.exited_with(plot_exit_interrupted))
+        return Figures::interrupted; // the figures drawn so far are whole; the next report redraws all
+    const bool succeeded = run.exited_with(0);
+    for (const auto& line : non_empty_lines(run.out))
         console << line << '\n';
-    if (!succeeded || !err_text.empty()) // keep everything the script said, traceback included
-        write_file_atomically(log_file, out_text + err_text);
+    if (!succeeded || !run.err.empty()) // keep everything the script said, traceback included
+        write_file_atomically(log_file, run.started ? run.out + run.err : run.error + '\n');
     std::ostream& errors = *options.errors;
     if (!succeeded) {
-        const auto lines = non_empty_lines(err_text.empty() ? out_text : err_text);
+        const auto lines = non_empty_lines(run.err.empty() ? run.out : run.err);
         std::string reason = lines.empty() ? std::string("no output") : lines.back();
-        if (status == -1 || !WIFEXITED(status))
+        if (!run.started)
+            reason = "the plotting script did not finish (could not start: " + run.error + ")";
+        else if (!WIFEXITED(run.status))
             reason = "the plotting script did not finish (" +
-                     (status != -1 && WIFSIGNALED(status) ? "signal " + std::to_string(WTERMSIG(status))
-                                                          : std::string("could not start")) +
+                     (WIFSIGNALED(run.status) ? "signal " + std::to_string(WTERMSIG(run.status))
+                                              : std::string("status ") + std::to_string(run.status)) +
                      ")";
         errors << "figures failed: " << reason << " (full output: " << log_file.string()
                << "); the tables and curve data are written\n";
-        return;
+        return Figures::drawn_or_skipped;
     }
-    for (const auto& line : non_empty_lines(err_text)) // the script's one line per figure that failed
+    for (const auto& line : non_empty_lines(run.err)) // the script's one line per figure that failed
         errors << "figures: " << line << '\n';
     console << "figures: " << figures.string() << '\n';
+    return Figures::drawn_or_skipped;
 }
 
 } // namespace
 
 std::optional<std::string> find_matplotlib_python(const std::vector<std::string>& candidates) {
-    for (const auto& python : candidates) {
-        const std::string probe = shell_quote(python) + " -c 'import matplotlib' >/dev/null 2>&1";
-        if (std::system(probe.c_str()) == 0)
-            return python;
-    }
-    return std::nullopt;
+    bool interrupted = false;
+    return find_python(candidates, interrupted);
 }
 
 namespace {
@@ -205,11 +221,12 @@ void make_report_directory(const fs::path& dir) {
         throw std::runtime_error(dir.string() + ": cannot create the report directory");
 }
 
-// Everything of one budget in `dir`: tables, curve data, effects, IOH export, figures. Returns the
-// tables (for the combined report.md and report.tex).
+// Everything of one budget in `dir`: tables, curve data, effects, IOH export, and the figures
+// unless `figures` is false. Returns the tables (for the combined report.md and report.tex); sets
+// `figures` to false when they were interrupted.
 std::vector<Table> write_budget_report(const StudyData& study, const std::string& budget, const fs::path& dir,
                                        const std::string& heading, const ReportOptions& options,
-                                       std::ostream& console, std::string& all_markdown) {
+                                       std::ostream& console, std::string& all_markdown, bool& figures) {
     make_report_directory(dir);
     const StudyIndex index(study, budget);
     ComparisonOptions comparison;
@@ -294,14 +311,14 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
                     << " of other runs";
         console << " (the format has no inf)\n";
     }
-    if (options.figures)
-        draw_figures(options, dir, console);
+    if (figures && draw_figures(options, dir, console) == Figures::interrupted)
+        figures = false;
     return tables;
 }
 
 } // namespace
 
-void build_report(const StudyData& study, const ReportOptions& options, std::ostream& console) {
+ReportOutcome build_report(const StudyData& study, const ReportOptions& options, std::ostream& console) {
     check_options(options);
     const fs::path out_dir = options.out_dir.empty() ? study.directory / "report" : options.out_dir;
     make_report_directory(out_dir);
@@ -325,9 +342,12 @@ void build_report(const StudyData& study, const ReportOptions& options, std::ost
                                (study.context_text.empty() || study.context_text.back() == '\n' ? "" : "\n") +
                                "```\n\n";
     std::vector<Table> tables;
+    // Interrupted figures end the figures, not the report: the tables of every budget are still
+    // written (they take little time), so that only the figures are left for `mhbench report`.
+    bool figures = options.figures;
     if (budgets.size() == 1) {
-        tables =
-            write_budget_report(study, budgets.front(), out_dir, heading, options, console, all_markdown);
+        tables = write_budget_report(study, budgets.front(), out_dir, heading, options, console, all_markdown,
+                                     figures);
     } else {
         // Several budgets: one complete report per budget in <out>/<budget slug>/, the combined
         // report.md / report.tex and budgets.csv (budget,directory) on top.
@@ -338,7 +358,7 @@ void build_report(const StudyData& study, const ReportOptions& options, std::ost
             all_markdown += "## Budget " + (budget.empty() ? std::string("unspecified") : budget) + " (" +
                             slug + "/)\n\n";
             for (auto& t : write_budget_report(study, budget, out_dir / slug, "budget " + budget + ": ",
-                                               options, console, all_markdown)) {
+                                               options, console, all_markdown, figures)) {
                 t.id = slug + "_" + t.id; // one LaTeX label per table in the combined report.tex
                 tables.push_back(std::move(t));
             }
@@ -349,6 +369,15 @@ void build_report(const StudyData& study, const ReportOptions& options, std::ost
         write_file_atomically(out_dir / "report.md", all_markdown);
     if (options.formats.count("tex"))
         write_file_atomically(out_dir / "report.tex", latex_document(tables));
+    ReportOutcome outcome;
+    outcome.interrupted = options.figures && !figures;
+    if (outcome.interrupted) {
+        std::string again = "mhbench report " + shell_quote(study.directory.string());
+        if (!options.out_dir.empty())
+            again += " --out " + shell_quote(options.out_dir.string());
+        *options.errors << "figures interrupted; run `" << again << "` to draw them\n";
+    }
+    return outcome;
 }
 
 } // namespace mhb

@@ -12,8 +12,14 @@
 // the console summary, the captions and the figures say what was left out. Figures are a
 // convenience: a plotting script that fails is reported in one line on `errors` ("figures
 // failed: ...", its whole output kept in figures/plot_study.log) and the report still succeeds.
+// The script runs as a child process tied to this one (results/child_process.hpp): killing
+// mhbench, even with SIGKILL, ends it too, and it writes each figure under a temporary name then
+// renames it, so a stop at any moment leaves whole files only (every other report file is written
+// by write_file_atomically). Ctrl-C (SIGINT) or SIGTERM while it draws stops it quietly: the report
+// says so in one line on `errors` and returns interrupted (ReportOutcome).
 #pragma once
 
+#include <atomic>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -38,13 +44,25 @@ struct ReportOptions {
     std::vector<std::string> python_candidates = {"/usr/bin/python3", "python3"};
     // Where a failure of the figures is reported (one line each); never nullptr.
     std::ostream* errors = &std::cerr;
+    // When set and true, no figure is started (the CLI passes its Ctrl-C flag): the outcome is
+    // interrupted, as if the figures had been stopped.
+    const std::atomic<bool>* stop = nullptr;
+};
+
+struct ReportOutcome {
+    // The figures were stopped (SIGINT or SIGTERM while the script ran, or `stop`): every table,
+    // the curve data and the IOH export are written, the figures of that budget and of the budgets
+    // after it are not (or only some), and `mhbench report` draws them. `errors` got one line:
+    // "figures interrupted; run `mhbench report DIR` to draw them".
+    bool interrupted = false;
 };
 
 // Checks the options (std::invalid_argument naming the option), then writes the report.
 // Throws std::runtime_error when a file cannot be written.
-void build_report(const StudyData& study, const ReportOptions& options, std::ostream& console);
+ReportOutcome build_report(const StudyData& study, const ReportOptions& options, std::ostream& console);
 
-// The first candidate interpreter that can import matplotlib, if any.
+// The first candidate interpreter that can import matplotlib, if any (each is run without a shell;
+// a name without '/' is searched in PATH).
 std::optional<std::string> find_matplotlib_python(const std::vector<std::string>& candidates);
 
 } // namespace mhb

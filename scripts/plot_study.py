@@ -33,25 +33,70 @@ on a log axis. A log axis is used only when every finite value is positive. A fi
 value was left out is still drawn, with a note saying why. A figure that fails anyway is reported
 in one line on stderr ("figure NAME failed: reason") and the others are drawn; the exit status is
 non-zero only when figures were due and none could be drawn.
+Each figure is written under a temporary name (.NAME.EXT.tmp-PID) and renamed: a stop at any moment
+leaves whole figures only, and a temporary file whose process is gone is removed by the next run.
+Ctrl-C (SIGINT) or SIGTERM stops it quietly: one line on stderr, no traceback, exit status 130
+(mhbench then says "figures interrupted"); it also stops when its parent process goes away, unless
+started with nohup.
 Needs matplotlib (Debian: apt install python3-matplotlib); uses the Agg backend, opens no window.
 """
-import csv
-import math
-import os
-import re
+import signal
 import sys
-import warnings
-from collections import OrderedDict
 
-try:
-    import matplotlib
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt  # noqa: E402
-except Exception as error:  # noqa: BLE001 - any import failure means no figures, said in one line
-    sys.stderr.write("cannot import matplotlib: %s: %s\n"
-                     % (type(error).__name__, (str(error).strip().splitlines() or [""])[0]))
-    sys.exit(1)
+class Interrupted(BaseException):
+    """SIGINT or SIGTERM arrived, or the parent went away: stop drawing (not an Exception, so that no
+    figure's `except Exception` takes it for a failed figure)."""
+
+
+EXIT_INTERRUPTED = 130
+STOP = []  # the signal that asked to stop, once one has
+
+
+def on_stop(signum, _frame):
+    # Later signals are ignored: the first one's clean-up (removing a temporary file) must not be cut.
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
+    STOP.append(signum)
+    raise Interrupted(signum)
+
+
+# First of all, before the slow matplotlib import, so that a Ctrl-C at any moment ends quietly.
+signal.signal(signal.SIGINT, on_stop)
+signal.signal(signal.SIGTERM, on_stop)
+
+import csv  # noqa: E402
+import math  # noqa: E402
+import os  # noqa: E402
+import re  # noqa: E402
+import warnings  # noqa: E402
+from collections import OrderedDict  # noqa: E402
+
+# mhbench, or the shell: when it is gone, nobody waits for these figures (unless started with nohup,
+# which ignores SIGHUP precisely so that the work outlives the shell).
+PARENT = None if signal.getsignal(signal.SIGHUP) == signal.SIG_IGN else os.getppid()
+plt = None  # matplotlib.pyplot, imported by import_matplotlib()
+
+
+def check_stop():
+    """Raises Interrupted when a stop was asked for (a library that swallowed it) or the parent is gone."""
+    if STOP or (PARENT is not None and os.getppid() != PARENT):
+        raise Interrupted(STOP[0] if STOP else 0)
+
+
+def import_matplotlib():
+    global plt
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as pyplot
+    except Exception as error:  # noqa: BLE001 - any import failure means no figures, said in one line
+        sys.stderr.write("cannot import matplotlib: %s: %s\n"
+                         % (type(error).__name__, (str(error).strip().splitlines() or [""])[0]))
+        sys.exit(1)
+    plt = pyplot
+
 
 # Notes and failures are said explicitly; library warnings (an empty legend, a NaN in a mean) would
 # only repeat them as multi-line noise on stderr.
@@ -74,6 +119,7 @@ class Figures:
 
     def attempt(self, name, draw, *args):
         """Draws one figure (or one group of figures); a failure is one line on stderr, not a traceback."""
+        check_stop()
         try:
             draw(*args)
         except Exception as error:  # noqa: BLE001 - any failure of one figure must not stop the others
@@ -112,11 +158,46 @@ def group(rows, *keys):
     return out
 
 
+TEMPORARY = re.compile(r"^\..+\.tmp-([0-9]+)$")
+
+
+def temporary_name(out_dir, file_name):
+    return os.path.join(out_dir, ".%s.tmp-%d" % (file_name, os.getpid()))
+
+
 def save(fig, out_dir, name):
+    """Writes NAME.pdf and NAME.png whole or not at all: under a temporary name, then renamed."""
     for ext in ("pdf", "png"):
-        fig.savefig(os.path.join(out_dir, name + "." + ext), dpi=150, bbox_inches="tight")
+        check_stop()
+        final = os.path.join(out_dir, name + "." + ext)
+        temporary = temporary_name(out_dir, name + "." + ext)
+        try:
+            fig.savefig(temporary, format=ext, dpi=150, bbox_inches="tight")
+            os.replace(temporary, final)
+        finally:
+            if os.path.exists(temporary):
+                os.remove(temporary)
     plt.close(fig)
     FIGURES.drawn += 1
+
+
+def remove_stale_temporaries(out_dir):
+    """Removes the temporary figures of a run that was killed (SIGKILL leaves no time to clean up)."""
+    for file_name in os.listdir(out_dir):
+        match = TEMPORARY.match(file_name)
+        if not match or int(match.group(1)) == os.getpid():
+            continue
+        try:
+            os.kill(int(match.group(1)), 0)
+            continue  # its process is still running (another report of the same folder)
+        except ProcessLookupError:
+            pass
+        except OSError:
+            continue
+        try:
+            os.remove(os.path.join(out_dir, file_name))
+        except OSError:
+            pass
 
 
 def label_of(row):
@@ -241,6 +322,7 @@ def main():
     if len(sys.argv) != 2:
         sys.exit("usage: plot_study.py REPORT_DIR")
     report = sys.argv[1]
+    import_matplotlib()
     budgets = []
     FIGURES.attempt("budgets.csv", lambda: budgets.extend(read_rows(os.path.join(report, "budgets.csv"))))
     if budgets:
@@ -271,6 +353,7 @@ def read_budget(report):
 def plot_report(report):
     out_dir = os.path.join(report, "figures")
     os.makedirs(out_dir, exist_ok=True)
+    remove_stale_temporaries(out_dir)
     budget = read_budget(report)
 
     FIGURES.attempt("convergence_iteration_*", lambda: convergence(
@@ -576,4 +659,10 @@ def effects_overview(design, rows, out_dir, budget):
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except (Interrupted, KeyboardInterrupt):
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+        sys.stderr.write("figures interrupted: %d drawn\n" % FIGURES.drawn)
+        sys.exit(EXIT_INTERRUPTED)

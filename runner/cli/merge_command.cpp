@@ -165,8 +165,8 @@ int run_merge_command(const std::vector<std::string>& args) {
     report.figures = !vm["no-figures"].as<bool>();
     report.plot_script = fs::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
     std::ostringstream discarded;
-    build_report(load_study(out), report, quiet ? discarded : std::cout);
-    return exit_ok;
+    return build_report(load_study(out), report, quiet ? discarded : std::cout).interrupted ? exit_interrupted
+                                                                                            : exit_ok;
 }
 
 } // namespace mhb::cli

@@ -76,15 +76,17 @@ int run_report_command(const std::vector<std::string>& args) {
     std::error_code ec;
     const bool existed = std::filesystem::exists(report_dir, ec);
     std::ostringstream printed;
+    ReportOutcome outcome;
     try {
-        build_report(study, options, printed);
+        outcome = build_report(study, options, printed);
     } catch (...) {
         if (!existed)
             std::filesystem::remove_all(report_dir, ec);
         throw;
     }
     std::cout << printed.str();
-    return exit_ok;
+    // Ctrl-C during the figures: the tables are written, build_report said so in one line on stderr.
+    return outcome.interrupted ? exit_interrupted : exit_ok;
 }
 
 } // namespace mhb::cli

@@ -364,10 +364,13 @@ int run_run_command(const std::vector<std::string>& args) {
     ReportOptions report;
     report.figures = !vm["no-figures"].as<bool>();
     report.plot_script = std::filesystem::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
+    report.stop = &stop_requested; // a Ctrl-C during the tables starts no figure
     std::ostringstream discarded;
     if (!quiet)
         std::cout << '\n';
-    build_report(load_study(dir), report, quiet ? discarded : std::cout);
+    // Ctrl-C during the figures: one line on stderr from build_report; the same command completes.
+    if (build_report(load_study(dir), report, quiet ? discarded : std::cout).interrupted)
+        return exit_interrupted;
     return exit_ok;
 }
 
