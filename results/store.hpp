@@ -20,6 +20,7 @@
 // store.bin (format 2: journal.txt keyed by run_id) are read, but not resumed or extended.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -118,6 +119,9 @@ public:
     StudyWriter(std::filesystem::path dir, std::string study_text, std::string context_text,
                 std::vector<std::string> parameter_columns, bool overwrite,
                 const std::vector<AlgorithmInfo>& algorithms = {}, std::optional<StudyRunKeys> keys = {});
+    ~StudyWriter();
+    StudyWriter(const StudyWriter&) = delete;
+    StudyWriter& operator=(const StudyWriter&) = delete;
 
     [[nodiscard]] const std::set<std::int64_t>& completed() const { return completed_; }
     [[nodiscard]] const std::filesystem::path& directory() const { return dir_; }
@@ -148,8 +152,8 @@ private:
     std::optional<StudyRunKeys> keys_;
     std::string unkeyed_suffix_; // of identities without keys: " of study <hash of the study text>"
     std::mutex mutex_;
-    std::ofstream store_;
-    std::uint64_t store_size_ = 0;                  // bytes in store.bin: where the next block goes
+    int store_fd_ = -1;                             // store.bin, written with pwrite
+    std::atomic<std::uint64_t> store_size_{0};      // bytes in store.bin: where the next block goes
     std::unordered_map<std::string, Stored> index_; // identity -> where its newest block is
     std::vector<std::string> identities_;           // of the study's runs, by run_id (with keys)
     std::set<std::int64_t> completed_;

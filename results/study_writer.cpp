@@ -211,11 +211,15 @@ StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string conte
             table += csv_field(a.spec) + ',' + csv_field(a.label) + ',' + csv_field(a.full_spec) + '\n';
         write_file_atomically(dir_ / StudyFiles::algorithms, table);
     }
-    errno = 0;
-    store_.open(dir_ / StudyFiles::store, std::ios::binary | std::ios::app);
-    if (!store_)
+    store_fd_ = ::open((dir_ / StudyFiles::store).c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
+    if (store_fd_ < 0)
         throw std::runtime_error((dir_ / StudyFiles::store).string() + ": cannot be written (" +
-                                 (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
+                                 std::strerror(errno) + ")");
+}
+
+StudyWriter::~StudyWriter() {
+    if (store_fd_ >= 0)
+        ::close(store_fd_);
 }
 
 RunKey StudyWriter::key_of(std::int64_t run_id, const RunRecord* record) const {
@@ -231,52 +235,91 @@ RunKey StudyWriter::key_of(std::int64_t run_id, const RunRecord* record) const {
     return key;
 }
 
+namespace {
+
+// The first position >= from where `block_magic` starts, or `size` when none does.
+std::uint64_t find_magic(const StoreReader& in, std::uint64_t from, std::uint64_t size) {
+    constexpr std::uint64_t window = 1 << 16;
+    std::string chunk;
+    while (from + block_magic.size() <= size) {
+        in.read(from, std::min(window, size - from), chunk);
+        const auto found = std::string_view(chunk).find(block_magic);
+        if (found != std::string_view::npos)
+            return from + found;
+        from += chunk.size() - (block_magic.size() - 1); // a magic may straddle two windows
+    }
+    return size;
+}
+
+} // namespace
+
 void StudyWriter::load_store() {
     const fs::path path = dir_ / StudyFiles::store;
     std::error_code ec;
     if (fs::is_directory(path, ec))
         throw std::runtime_error(path.string() + ": cannot be read (" + std::strerror(EISDIR) + ")");
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
+    if (!fs::exists(path, ec))
         return;
     const std::uint64_t file_size = fs::file_size(path, ec);
     if (ec)
         throw std::runtime_error(path.string() + ": cannot be read (" + ec.message() + ")");
-    std::uint64_t good_end = 0; // just past the last complete block
-    std::string header(block_magic.size() + 8, '\0');
-    std::string payload;
-    std::string end(block_end.size(), '\0');
-    while (in.read(header.data(), static_cast<std::streamsize>(header.size()))) {
-        if (std::string_view(header).substr(0, block_magic.size()) != block_magic)
-            break;
-        ByteReader size_reader(std::string_view(header).substr(block_magic.size()), path.string());
-        const std::uint64_t size = size_reader.u64();
-        if (size > file_size - good_end - header.size()) // cut short (or corrupt): never allocate for it
-            break;
-        payload.resize(static_cast<std::size_t>(size));
-        if (!in.read(payload.data(), static_cast<std::streamsize>(size)) ||
-            !in.read(end.data(), static_cast<std::streamsize>(end.size())) || end != block_end)
-            break;
-        try {
-            ByteReader reader(payload, path.string());
-            const std::string identity = reader.text();
-            Stored stored;
-            stored.offset = good_end + header.size();
-            stored.size = size;
-            stored.slot = reader.text();
-            index_[identity] = std::move(stored);
-        } catch (const std::runtime_error&) {
-            break;
+    const StoreReader in(path);
+    constexpr std::uint64_t header_size = block_magic.size() + 8;
+    // The file is scanned through a window of a few MB, not one read per block: a store may hold
+    // 10^6 runs.
+    constexpr std::uint64_t window = std::uint64_t{4} << 20;
+    std::string buffer;
+    std::uint64_t buffer_start = 0;
+    const auto view = [&](std::uint64_t at, std::uint64_t length) {
+        if (at < buffer_start || at + length > buffer_start + buffer.size()) {
+            buffer_start = at;
+            in.read(at, std::min(std::max(length, window), file_size - at), buffer);
         }
-        good_end += header.size() + size + end.size();
+        return std::string_view(buffer).substr(static_cast<std::size_t>(at - buffer_start),
+                                               static_cast<std::size_t>(length));
+    };
+    std::uint64_t position = 0;
+    std::uint64_t good_end = 0; // just past the last complete block
+    while (position + header_size + block_end.size() <= file_size) {
+        const std::string_view header = view(position, header_size);
+        bool complete = header.substr(0, block_magic.size()) == block_magic;
+        std::uint64_t size = 0;
+        if (complete) {
+            ByteReader size_reader(header.substr(block_magic.size()), path.string());
+            size = size_reader.u64();
+            // Cut short (or corrupt): never allocate for it.
+            complete = size <= file_size - position - header_size - block_end.size();
+        }
+        if (complete)
+            complete = view(position + header_size + size, block_end.size()) == block_end;
+        if (complete) {
+            try {
+                ByteReader reader(view(position + header_size, size), path.string());
+                const std::string identity = reader.text();
+                Stored stored;
+                stored.offset = position + header_size;
+                stored.size = size;
+                stored.slot = reader.text();
+                index_[identity] = std::move(stored);
+            } catch (const std::runtime_error&) {
+                complete = false;
+            }
+        }
+        if (complete) {
+            position += header_size + size + block_end.size();
+            good_end = position;
+        } else {
+            // Blocks are written concurrently at reserved positions: one a killed process left
+            // half-written may be followed by complete ones. Go on from the next block start.
+            position = find_magic(in, position + 1, file_size);
+        }
     }
-    in.close();
     // Cut a half-written last block off, so that new blocks never follow it.
     if (file_size != good_end)
         fs::resize_file(path, good_end, ec);
-    store_size_ = good_end;
     if (ec)
         throw std::runtime_error(path.string() + ": cannot be repaired (" + ec.message() + ")");
+    store_size_ = good_end;
 }
 
 void StudyWriter::check_changes(bool overwrite) {
@@ -354,25 +397,31 @@ void StudyWriter::check_changes(bool overwrite) {
 void StudyWriter::append(const RunRecord& record, double wall_seconds) {
     const RunKey key = key_of(record.run_id, &record);
     const std::string block = store_block(key, record, wall_seconds);
-    const std::lock_guard<std::mutex> lock(mutex_);
-    const std::uint64_t offset = store_size_;
-    store_.write(block.data(), static_cast<std::streamsize>(block.size()));
-    store_.flush();
-    if (!store_)
-        throw std::runtime_error((dir_ / StudyFiles::store).string() + ": writing failed (" +
-                                 std::strerror(errno) + ")");
-    store_size_ += block.size();
+    // Each block gets its own byte range and is written there without a lock, so that threads
+    // store runs concurrently; only the index update is serialised.
+    const std::uint64_t offset = store_size_.fetch_add(block.size());
+    std::size_t done = 0;
+    while (done < block.size()) {
+        const ssize_t n =
+            ::pwrite(store_fd_, block.data() + done, block.size() - done, static_cast<off_t>(offset + done));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            throw std::runtime_error((dir_ / StudyFiles::store).string() + ": writing failed (" +
+                                     (n < 0 ? std::strerror(errno) : "no space written") + ")");
+        done += static_cast<std::size_t>(n);
+    }
     Stored stored;
     stored.offset = offset + block_magic.size() + 8;
     stored.size = block.size() - block_magic.size() - 8 - block_end.size();
     stored.slot = key.slot;
+    const std::lock_guard<std::mutex> lock(mutex_);
     index_[key.identity] = std::move(stored);
     completed_.insert(record.run_id);
 }
 
 void StudyWriter::finish() {
     const std::lock_guard<std::mutex> lock(mutex_);
-    store_.flush();
     const StoreReader in(dir_ / StudyFiles::store);
     const auto render_stored = [&](std::int64_t id, std::string& payload, Block& out, StudySummary& summary) {
         const auto found =

@@ -143,6 +143,33 @@ TEST(Store, ResumesAnInterruptedStudyKeepingFinishedRunsOnly) {
     EXPECT_TRUE(StudyWriter(dir, "study A\n", "", {}, true).completed().empty()); // overwrite: a fresh store
 }
 
+TEST(Store, AHalfWrittenBlockBetweenCompleteOnesLosesOnlyItsRun) {
+    // Threads write blocks concurrently at reserved positions, so a killed process may leave a
+    // half-written block before complete ones: those are kept.
+    const fs::path dir = fresh_dir("hole");
+    std::uintmax_t first_end = 0;
+    {
+        StudyWriter w(dir, "study A\n", "", {}, false);
+        w.append(make_record(0), 0.1);
+        first_end = fs::file_size(dir / "store.bin");
+        w.append(make_record(1), 0.1);
+        w.append(make_record(2), 0.1);
+    }
+    {
+        // Overwrite the middle of run 1's block with zeros, as an unfinished write leaves it.
+        std::fstream f(dir / "store.bin", std::ios::binary | std::ios::in | std::ios::out);
+        f.seekp(static_cast<std::streamoff>(first_end + 4));
+        const std::string zeros(64, '\0');
+        f.write(zeros.data(), static_cast<std::streamsize>(zeros.size()));
+    }
+    StudyWriter w(dir, "study A\n", "", {}, false);
+    EXPECT_EQ(w.completed(), (std::set<std::int64_t>{0, 2}));
+    w.append(make_record(1), 0.1);
+    w.finish();
+    ASSERT_EQ(load_study(dir).runs.size(), 3u);
+    EXPECT_EQ(load_study(dir).runs[1].best_f, make_record(1).best_f);
+}
+
 TEST(Store, DamagedDirectoriesGiveErrorsNamingTheFile) {
     const fs::path dir = fresh_dir("damaged");
     {
