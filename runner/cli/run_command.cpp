@@ -329,7 +329,12 @@ int run_run_command(const std::vector<std::string>& args) {
     shown.line_interval = vm["progress-interval"].as<double>();
     const std::int64_t to_do =
         shard_runs ? static_cast<std::int64_t>(shard_runs->size()) : prepared->run_count();
-    ProgressBar progress(std::cerr, to_do, static_cast<std::int64_t>(writer.completed().size()), shown);
+    // The store may hold runs of other studies (kept for a larger one): count this study's only.
+    std::int64_t stored = static_cast<std::int64_t>(writer.completed().size());
+    if (shard_runs)
+        stored = std::count_if(shard_runs->begin(), shard_runs->end(),
+                               [&](std::int64_t id) { return writer.completed().count(id) != 0; });
+    ProgressBar progress(std::cerr, to_do, stored, shown);
     RunnerOptions runner;
     runner.threads = threads;
     runner.stop = &stop_requested;
