@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages mhbench needs, if any are missing (as root, or through sudo).
 # Every dependency comes from Debian: nothing is downloaded at build time.
-# Optional groups are named as arguments: `setup-debian.sh fuzz` adds clang and libFuzzer.
+# Optional groups are named as arguments: `setup-debian.sh fuzz` adds clang and libFuzzer,
+# `setup-debian.sh mpi` Open MPI (the MHB_WITH_MPI build, scripts/mpi.sh).
 set -euo pipefail
 
 packages=(
@@ -17,12 +18,14 @@ packages=(
     python3-matplotlib                   # figures (Debian's /usr/bin/python3)
 )
 optional_fuzz=(clang libclang-rt-dev)    # scripts/fuzz.sh: clang with libFuzzer and its sanitizers
+optional_mpi=(libopenmpi-dev openmpi-bin) # scripts/mpi.sh: Open MPI for `mpirun -np N mhbench run`
 
 for group in "$@"; do
     case "$group" in
     fuzz) packages+=("${optional_fuzz[@]}") ;;
+    mpi) packages+=("${optional_mpi[@]}") ;;
     *)
-        echo "mhbench set-up: unknown optional group '$group' (known: fuzz)" >&2
+        echo "mhbench set-up: unknown optional group '$group' (known: fuzz, mpi)" >&2
         exit 2
         ;;
     esac

@@ -24,6 +24,7 @@
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/context.hpp"
+#include "runner/distributed.hpp"
 #include "runner/dry_run.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/progress.hpp"
@@ -286,6 +287,15 @@ int run_run_command(const std::vector<std::string>& args) {
         std::cout << dry_run_text(*prepared, dir, threads);
         return exit_ok;
     }
+    // Under mpirun, rank 0 alone touches the directory, prints and reports; the other ranks run
+    // what it hands them (runner/distributed.hpp).
+    if (distributed_rank() != 0) {
+        const StopSignals signals;
+        RunnerOptions worker;
+        worker.threads = threads;
+        worker.stop = &stop_requested;
+        return run_study_anywhere(*prepared, nullptr, worker).interrupted ? exit_interrupted : exit_ok;
+    }
     std::vector<std::string> command_line{"mhbench", "run"};
     command_line.insert(command_line.end(), args.begin(), args.end());
     // A shard's directory says which shard it holds, so that an unfinished one is resumed only as
@@ -309,7 +319,8 @@ int run_run_command(const std::vector<std::string>& args) {
         shard_runs = shard_run_ids(*prepared, shard->count)[static_cast<std::size_t>(shard->index - 1)];
     // From here on Ctrl-C means "stop after the runs under way"; before, it just ends the process.
     const StopSignals signals;
-    std::string context = context_ini(threads, command_line) + context_data_files(prepared->problems);
+    std::string context =
+        context_ini(threads, command_line) + distributed_context() + context_data_files(prepared->problems);
     if (shard)
         context += "shard = " + shard_text(*shard) + '\n';
     StudyWriter writer(dir, study_ini(prepared->study), context, prepared->parameter_columns,
@@ -345,7 +356,7 @@ int run_run_command(const std::vector<std::string>& args) {
         };
 
     const auto started = std::chrono::steady_clock::now();
-    const RunnerOutcome outcome = run_study(*prepared, writer, runner);
+    const RunnerOutcome outcome = run_study_anywhere(*prepared, &writer, runner);
     progress.finish();
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
 

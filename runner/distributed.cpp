@@ -1,0 +1,105 @@
+#include "runner/distributed.hpp"
+
+#include <charconv>
+#include <cstdlib>
+#include <memory>
+#include <stdexcept>
+#include <string_view>
+
+#if MHB_WITH_MPI
+#include "runner/mpi/mpi_runner.hpp"
+#endif
+
+namespace mhb {
+namespace {
+
+int environment_count(const char* name) {
+    const char* text = std::getenv(name);
+    if (text == nullptr)
+        return 0;
+    const std::string_view value(text);
+    int count = 0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), count);
+    return error == std::errc() && end == value.data() + value.size() && count > 0 ? count : 0;
+}
+
+#if MHB_WITH_MPI
+// The MPI session of this process: started on first use under a launcher, ended at exit.
+struct Distributed {
+    MpiSession session;
+    bool ran = false;
+    Distributed() = default;
+    Distributed(const Distributed&) = delete;
+    Distributed& operator=(const Distributed&) = delete;
+    // Rank 0 may end without running the study (it refused the directory, say): the other ranks
+    // are waiting for runs then, and must be told before MPI is finalised, or all would hang.
+    ~Distributed() {
+        if (!ran)
+            release_waiting_ranks(session);
+    }
+};
+
+Distributed* distributed() {
+    static const std::unique_ptr<Distributed> instance =
+        launched_under_mpi() ? std::make_unique<Distributed>() : nullptr;
+    return instance.get();
+}
+#endif
+
+} // namespace
+
+int launcher_process_count() {
+    const int open_mpi = environment_count("OMPI_COMM_WORLD_SIZE");
+    return open_mpi > 0 ? open_mpi : environment_count("PMI_SIZE");
+}
+
+bool built_with_mpi() {
+#if MHB_WITH_MPI
+    return true;
+#else
+    return false;
+#endif
+}
+
+int distributed_rank() {
+#if MHB_WITH_MPI
+    const Distributed* d = distributed();
+    return d != nullptr ? d->session.rank() : 0;
+#else
+    if (launcher_process_count() > 1)
+        throw std::runtime_error("this mhbench was built without MPI, yet an MPI launcher started " +
+                                 std::to_string(launcher_process_count()) +
+                                 " processes of it, which would all write one study directory: run it "
+                                 "without mpirun, or build it with -DMHB_WITH_MPI=ON (the mpi preset)");
+    return 0;
+#endif
+}
+
+int distributed_rank_count() {
+#if MHB_WITH_MPI
+    const Distributed* d = distributed();
+    return d != nullptr ? d->session.size() : 1;
+#else
+    return 1;
+#endif
+}
+
+std::string distributed_context() {
+    const int ranks = distributed_rank_count();
+    return ranks > 1 ? "mpi_ranks = " + std::to_string(ranks) + "\n" : "";
+}
+
+RunnerOutcome run_study_anywhere(const PreparedStudy& study, StudyWriter* writer,
+                                 const RunnerOptions& options) {
+#if MHB_WITH_MPI
+    if (Distributed* d = distributed(); d != nullptr && d->session.size() > 1) {
+        d->ran = true;
+        return run_study_distributed(study, writer, options, d->session);
+    }
+#endif
+    if (writer == nullptr)
+        throw std::logic_error("run_study_anywhere: no StudyWriter outside an MPI job of several ranks");
+    return run_study(study, *writer, options);
+}
+
+} // namespace mhb

@@ -1,0 +1,105 @@
+// `mpirun -np 2 mhbench run` (MHB_MPIRUN) writes the study directory `mhbench run` writes in one
+// process, runs, curves, checkpoints and trajectories byte for byte, prints its summary once and
+// records the rank count in context.ini; it finishes a study a one-process run left interrupted;
+// and when rank 0 refuses the directory every rank ends, without a hang.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "integration/cli_harness.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+using mhb::testing_cli::read_text;
+using mhb::testing_cli::run_mhbench;
+using mhb::testing_cli::run_shell;
+
+// Run costs over an order of magnitude apart (about 3 ms for random search on the sphere, 40 ms
+// for CMA-ES on the PMSM problem), named parameters so that trajectories.csv has rows, and 90
+// runs, about 1.5 s on one thread: time enough to interrupt one process after its first runs.
+const std::string study_options =
+    "--algorithms 'random-search tlbo cmaes' --problems 'sphere:dim=5 rastrigin:dim=5 pmsm' "
+    "--budget evaluations=100000 --runs 10 --no-report ";
+
+fs::path fresh(const std::string& name) {
+    const fs::path dir = mhb::testing_cli::scratch_directory() / ("mpi_" + name);
+    fs::remove_all(dir);
+    return dir;
+}
+
+// `mhbench ARGS` on 2 ranks; `timeout` turns a hang into a failure with a message.
+mhb::testing_cli::CliResult mpirun_mhbench(const std::string& args) {
+    return run_shell(std::string("timeout 300 ") + MHB_MPIRUN + " '" + MHB_CLI_PATH + "' " + args);
+}
+
+std::size_t occurrences(const std::string& text, const std::string& part) {
+    std::size_t n = 0;
+    for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1))
+        ++n;
+    return n;
+}
+
+void expect_same_records(const fs::path& dir, const fs::path& reference) {
+    for (const char* file :
+         {"runs.csv", "curves.csv", "checkpoints.csv", "trajectories.csv", "study.ini", "algorithms.csv"}) {
+        EXPECT_TRUE(fs::exists(dir / file)) << file;
+        EXPECT_EQ(read_text(dir / file), read_text(reference / file)) << file;
+    }
+}
+
+TEST(MpiCli, TwoRanksWriteTheDirectoryOneProcessWritesByteForByte) {
+    const fs::path one = fresh("one");
+    const auto single = run_mhbench("run " + study_options + "--threads 2 --quiet --out " + one.string());
+    ASSERT_EQ(single.exit_code, 0) << single.err;
+    ASSERT_NE(read_text(one / "trajectories.csv").find('\n'), read_text(one / "trajectories.csv").rfind('\n'))
+        << "the study should have trajectories";
+
+    const fs::path two = fresh("two");
+    const auto spread = mpirun_mhbench("run " + study_options + "--threads 1 --out " + two.string());
+    ASSERT_EQ(spread.exit_code, 0) << spread.out << spread.err;
+    expect_same_records(two, one);
+    // Rank 0 alone prints and writes; context.ini says how the runs were spread.
+    EXPECT_EQ(occurrences(spread.out, "study finished:"), 1u) << spread.out;
+    EXPECT_NE(read_text(two / "context.ini").find("mpi_ranks = 2\n"), std::string::npos)
+        << read_text(two / "context.ini");
+    EXPECT_EQ(read_text(one / "context.ini").find("mpi_ranks"), std::string::npos);
+}
+
+TEST(MpiCli, AStudyInterruptedInOneProcessIsFinishedUnderMpirun) {
+    const fs::path one = fresh("whole");
+    ASSERT_EQ(run_mhbench("run " + study_options + "--quiet --out " + one.string()).exit_code, 0);
+
+    // SIGINT to a one-process run as soon as it has stored a run (store.bin, or journal.txt in
+    // the older format), so that it stops with some runs kept and most to do.
+    const fs::path dir = fresh("resumed");
+    const std::string stored = "cat '" + (dir / "store.bin").string() + "' '" +
+                               (dir / "journal.txt").string() + "' 2>/dev/null | wc -c";
+    const std::string command = std::string("'") + MHB_CLI_PATH + "' run " + study_options +
+                                "--threads 1 --quiet --out " + dir.string();
+    const auto first = run_shell(command + " & pid=$!; i=0; while [ \"$(" + stored +
+                                 ")\" -eq 0 ] && [ $i -lt 600 ]; do sleep 0.05; i=$((i+1)); done; "
+                                 "kill -INT $pid; wait $pid");
+    ASSERT_EQ(first.exit_code, 130) << first.err;
+    ASSERT_FALSE(fs::exists(dir / "runs.csv"));
+
+    const auto second = mpirun_mhbench("run " + study_options + "--threads 1 --out " + dir.string());
+    ASSERT_EQ(second.exit_code, 0) << second.out << second.err;
+    expect_same_records(dir, one);
+}
+
+TEST(MpiCli, WhenRankZeroRefusesTheDirectoryEveryRankEnds) {
+    // A directory of the user's own files is never taken over: rank 0 refuses it before any run,
+    // and the other rank, waiting for runs, must be released rather than hang.
+    const fs::path dir = fresh("users_own");
+    fs::create_directories(dir);
+    std::ofstream(dir / "notes.txt") << "mine\n";
+    const auto r = mpirun_mhbench("run " + study_options + "--threads 1 --out " + dir.string());
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.exit_code, 124) << "timed out: a rank hung";
+    EXPECT_NE(r.err.find("mhbench run: " + dir.string()), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("study finished"), std::string::npos) << r.out;
+    EXPECT_EQ(read_text(dir / "notes.txt"), "mine\n");
+    EXPECT_FALSE(fs::exists(dir / "runs.csv"));
+}
+
+} // namespace
