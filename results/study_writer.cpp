@@ -1,4 +1,5 @@
-// StudyWriter: the journal of finished runs, resuming, and the sorted result files (see store.hpp).
+// StudyWriter: the store of finished runs (store.bin), resuming and growing a study, and the sorted
+// result files rendered from it (see store.hpp).
 #include <algorithm>
 #include <cerrno>
 #include <charconv>

@@ -38,7 +38,7 @@ std::string distributed_context();
 // run_study's contract, on every rank: `writer` is non-null exactly on rank 0 (the one writer),
 // which alone reads options.run_ids and calls options.on_run_finished (for the runs of every
 // rank). options.threads is each rank's own. options.stop stops the rank it is set on: rank 0
-// hands out no more runs (the study is interrupted once the runs under way are journaled),
+// hands out no more runs (the study is interrupted once the runs under way are stored),
 // another rank gives back the runs it has not started. Every rank returns the same outcome.
 // Outside MPI (or with one rank) this is run_study(study, *writer, options).
 RunnerOutcome run_study_anywhere(const PreparedStudy& study, StudyWriter* writer,

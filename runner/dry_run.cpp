@@ -55,10 +55,11 @@ std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::p
                   count_text(estimate.evaluations()).c_str(), seconds, threads, threads == 1 ? "" : "s");
     out << "\ntotal: " << line << " (calibrated on " << estimate.calibration_runs << " short runs)\n";
     out << "output: " << dir.string();
-    if (std::filesystem::exists(dir / StudyFiles::runs))
-        out << " (holds a finished study: the run needs --overwrite or another --out)\n";
-    else if (std::filesystem::exists(dir / StudyFiles::journal))
-        out << " (holds an unfinished study: the run resumes it if it is this one)\n";
+    if (std::filesystem::exists(dir / StudyFiles::store))
+        out << " (holds a study store: runs of this study found in it are not run again)\n";
+    else if (std::filesystem::exists(dir / StudyFiles::runs) ||
+             std::filesystem::exists(dir / StudyFiles::journal))
+        out << " (holds a study of an earlier mhbench: the run needs --overwrite or another --out)\n";
     else
         out << '\n';
     return out.str();

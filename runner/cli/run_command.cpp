@@ -51,7 +51,7 @@ extern "C" void on_stop_signal(int) {
 
 // Installs the stop handler for the lifetime of a study and restores the previous ones.
 // SA_RESETHAND: a second Ctrl-C gets the default action and ends the process at once (the
-// journal is safe either way: a half-written block is dropped on resume).
+// store is safe either way: a half-written block is dropped on resume).
 class StopSignals {
 public:
     StopSignals() {

@@ -1,5 +1,5 @@
 // A whole study, end to end: every run of a preset executed by the parallel runner and written
-// by the StudyWriter (journal, then the sorted files), with 1 and 2 threads. Building the
+// by the StudyWriter (store.bin, then the sorted files), with 1 and 2 threads. Building the
 // problems and optimisers (prepare_study) is done once, outside the timing.
 //
 //   ./build/release/tests/bench/study_bench                       (the paper's study)
