@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cstring>
+#include <deque>
 #include <fcntl.h>
 #include <fstream>
 #include <memory>
@@ -424,12 +425,8 @@ void StudyWriter::append(const RunRecord& record, double wall_seconds) {
 void StudyWriter::finish() {
     const std::lock_guard<std::mutex> lock(mutex_);
     const StoreReader in(dir_ / StudyFiles::store);
-    const auto render_stored = [&](std::int64_t id, std::string& payload, Block& out, StudySummary& summary) {
-        const auto found =
-            index_.find(keys_ ? identities_[static_cast<std::size_t>(id)] : key_of(id, nullptr).identity);
-        if (found == index_.end())
-            return;
-        in.read(found->second.offset, found->second.size, payload);
+    const auto render_stored = [&](std::int64_t id, std::string_view payload, Block& out,
+                                   StudySummary& summary) {
         ByteReader reader(payload, (dir_ / StudyFiles::store).string());
         for (int skipped = 0; skipped < 4; ++skipped) // identity, slot, facts, notes
             reader.text();
@@ -506,40 +503,82 @@ void StudyWriter::finish() {
     };
     std::size_t next = 0;
     tbb::parallel_pipeline(
-        16, tbb::make_filter<void, std::pair<std::size_t, std::size_t>>(
-                tbb::filter_mode::serial_in_order,
-                [&](tbb::flow_control& control) {
-                    if (next >= ids.size()) {
-                        control.stop();
-                        return std::pair<std::size_t, std::size_t>{};
+        16,
+        tbb::make_filter<void, std::pair<std::size_t, std::size_t>>(
+            tbb::filter_mode::serial_in_order,
+            [&](tbb::flow_control& control) {
+                if (next >= ids.size()) {
+                    control.stop();
+                    return std::pair<std::size_t, std::size_t>{};
+                }
+                const std::size_t first = next;
+                next = std::min(ids.size(), next + chunk);
+                return std::pair<std::size_t, std::size_t>{first, next};
+            }) &
+            tbb::make_filter<std::pair<std::size_t, std::size_t>, std::shared_ptr<Rendered>>(
+                tbb::filter_mode::parallel,
+                [&](std::pair<std::size_t, std::size_t> span) {
+                    auto out = std::make_shared<Rendered>();
+                    // The chunk's blocks, read with one pread per run of neighbouring blocks
+                    // (runs finish, and are stored, roughly in run order).
+                    std::vector<std::pair<const Stored*, std::int64_t>> blocks;
+                    for (std::size_t k = span.first; k < span.second; ++k) {
+                        const auto found = index_.find(keys_ ? identities_[static_cast<std::size_t>(ids[k])]
+                                                             : key_of(ids[k], nullptr).identity);
+                        if (found != index_.end())
+                            blocks.emplace_back(&found->second, ids[k]);
                     }
-                    const std::size_t first = next;
-                    next = std::min(ids.size(), next + chunk);
-                    return std::pair<std::size_t, std::size_t>{first, next};
+                    std::vector<std::string_view> payloads(blocks.size());
+                    std::vector<std::size_t> by_offset(blocks.size());
+                    for (std::size_t i = 0; i < by_offset.size(); ++i)
+                        by_offset[i] = i;
+                    std::sort(by_offset.begin(), by_offset.end(), [&](std::size_t a, std::size_t b) {
+                        return blocks[a].first->offset < blocks[b].first->offset;
+                    });
+                    std::deque<std::string>
+                        buffers; // a deque: growing it moves no string the views point into
+                    constexpr std::uint64_t gap = 1 << 12;
+                    constexpr std::uint64_t limit = std::uint64_t{8} << 20;
+                    for (std::size_t g = 0; g < by_offset.size();) {
+                        const std::uint64_t start = blocks[by_offset[g]].first->offset;
+                        std::uint64_t stop = start + blocks[by_offset[g]].first->size;
+                        std::size_t h = g + 1;
+                        while (h < by_offset.size()) {
+                            const Stored& neighbour = *blocks[by_offset[h]].first;
+                            if (neighbour.offset > stop + gap ||
+                                neighbour.offset + neighbour.size - start > limit)
+                                break;
+                            stop = std::max(stop, neighbour.offset + neighbour.size);
+                            ++h;
+                        }
+                        buffers.emplace_back();
+                        in.read(start, stop - start, buffers.back());
+                        for (std::size_t i = g; i < h; ++i) {
+                            const Stored& b = *blocks[by_offset[i]].first;
+                            payloads[by_offset[i]] = std::string_view(buffers.back())
+                                                         .substr(static_cast<std::size_t>(b.offset - start),
+                                                                 static_cast<std::size_t>(b.size));
+                        }
+                        g = h;
+                    }
+                    for (std::size_t i = 0; i < blocks.size(); ++i)
+                        render_stored(blocks[i].second, payloads[i], out->text, out->summary);
+                    return out;
                 }) &
-                tbb::make_filter<std::pair<std::size_t, std::size_t>, std::shared_ptr<Rendered>>(
-                    tbb::filter_mode::parallel,
-                    [&](std::pair<std::size_t, std::size_t> span) {
-                        auto out = std::make_shared<Rendered>();
-                        std::string payload;
-                        for (std::size_t k = span.first; k < span.second; ++k)
-                            render_stored(ids[k], payload, out->text, out->summary);
-                        return out;
-                    }) &
-                tbb::make_filter<std::shared_ptr<Rendered>, void>(
-                    tbb::filter_mode::serial_in_order, [&](const std::shared_ptr<Rendered>& part) {
-                        runs.out << part->text.run_line;
-                        curves.out << part->text.curve_lines;
-                        checkpoints.out << part->text.checkpoint_lines;
-                        trajectories.out << part->text.trajectory_lines;
-                        timings.out << part->text.timing_line;
-                        summary_.runs += part->summary.runs;
-                        summary_.failed += part->summary.failed;
-                        summary_.evaluations += part->summary.evaluations;
-                        for (auto& failure : part->summary.first_failures)
-                            if (summary_.first_failures.size() < 3)
-                                summary_.first_failures.push_back(std::move(failure));
-                    }));
+            tbb::make_filter<std::shared_ptr<Rendered>, void>(
+                tbb::filter_mode::serial_in_order, [&](const std::shared_ptr<Rendered>& part) {
+                    runs.out << part->text.run_line;
+                    curves.out << part->text.curve_lines;
+                    checkpoints.out << part->text.checkpoint_lines;
+                    trajectories.out << part->text.trajectory_lines;
+                    timings.out << part->text.timing_line;
+                    summary_.runs += part->summary.runs;
+                    summary_.failed += part->summary.failed;
+                    summary_.evaluations += part->summary.evaluations;
+                    for (auto& failure : part->summary.first_failures)
+                        if (summary_.first_failures.size() < 3)
+                            summary_.first_failures.push_back(std::move(failure));
+                }));
     for (Output* o : {&curves, &checkpoints, &trajectories, &timings, &runs}) {
         o->out.close();
         if (!o->out)
