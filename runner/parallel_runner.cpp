@@ -20,8 +20,8 @@ int resolve_thread_count(int threads) {
     return threads == 0 ? tbb::info::default_concurrency() : threads;
 }
 
-RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const RunnerOptions& options) {
-    RunnerOutcome outcome;
+std::vector<std::int64_t> pending_runs(const PreparedStudy& study, const StudyWriter& writer,
+                                       const RunnerOptions& options, RunnerOutcome& outcome) {
     std::vector<std::int64_t> wanted = options.run_ids.value_or(std::vector<std::int64_t>{});
     if (!options.run_ids) {
         wanted.resize(static_cast<std::size_t>(study.run_count()));
@@ -30,17 +30,21 @@ RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const R
     }
     outcome.total = static_cast<std::int64_t>(wanted.size());
     // The store may hold more (runs of a larger study kept for later); only the wanted ones count.
-    for (const std::int64_t id : wanted)
-        outcome.resumed += static_cast<std::int64_t>(writer.completed().count(id));
-
     std::vector<std::int64_t> pending;
-    pending.reserve(static_cast<std::size_t>(outcome.total - outcome.resumed));
     for (const std::int64_t id : wanted) {
         if (id < 0 || id >= study.run_count())
             throw std::logic_error("run_study: run " + std::to_string(id) + " is not a run of this study");
-        if (writer.completed().count(id) == 0)
+        if (writer.completed().count(id) != 0)
+            ++outcome.resumed;
+        else
             pending.push_back(id);
     }
+    return pending;
+}
+
+RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const RunnerOptions& options) {
+    RunnerOutcome outcome;
+    const std::vector<std::int64_t> pending = pending_runs(study, writer, options, outcome);
 
     const auto stopping = [&] { return options.stop != nullptr && options.stop->load(); };
     std::mutex progress_mutex;

@@ -42,6 +42,12 @@ struct RunnerOutcome {
 // A run that throws becomes a failed record; an I/O error of the writer propagates.
 RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const RunnerOptions& options = {});
 
+// The runs `options` asks for (its run_ids, or every run of `study`) that `writer`'s store does
+// not hold, in that order; sets outcome.total and outcome.resumed. Throws std::logic_error for
+// an id outside the study. run_study and the MPI runner share it.
+std::vector<std::int64_t> pending_runs(const PreparedStudy& study, const StudyWriter& writer,
+                                       const RunnerOptions& options, RunnerOutcome& outcome);
+
 // The thread count `threads` = 0 stands for (oneTBB's default concurrency).
 int resolve_thread_count(int threads);
 

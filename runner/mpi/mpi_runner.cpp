@@ -17,28 +17,6 @@
 namespace mhb {
 namespace {
 
-// The runs of the study (or shard) not in the writer's store, counted as run_study counts them:
-// the store may hold more (runs of a larger study, kept for later); only the wanted ones count.
-std::vector<std::int64_t> pending_runs(const PreparedStudy& study, const StudyWriter& writer,
-                                       const RunnerOptions& options, RunnerOutcome& outcome) {
-    std::vector<std::int64_t> wanted = options.run_ids.value_or(std::vector<std::int64_t>{});
-    if (!options.run_ids)
-        for (std::int64_t id = 0; id < study.run_count(); ++id)
-            wanted.push_back(id);
-    outcome.total = static_cast<std::int64_t>(wanted.size());
-    std::vector<std::int64_t> pending;
-    for (const std::int64_t id : wanted) {
-        if (id < 0 || id >= study.run_count())
-            throw std::logic_error("run_study_distributed: run " + std::to_string(id) +
-                                   " is not a run of this study");
-        if (writer.completed().count(id) != 0)
-            ++outcome.resumed;
-        else
-            pending.push_back(id);
-    }
-    return pending;
-}
-
 // Long runs first, so that none starts last and keeps the other ranks waiting at the end.
 void most_expensive_first(const PreparedStudy& study, std::vector<std::int64_t>& ids) {
     if (ids.empty())
