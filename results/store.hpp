@@ -23,7 +23,6 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <mutex>
@@ -125,9 +124,6 @@ public:
 
     [[nodiscard]] const std::set<std::int64_t>& completed() const { return completed_; }
     [[nodiscard]] const std::filesystem::path& directory() const { return dir_; }
-    // Runs in the store that this study does not use (kept for a later, larger study).
-    [[nodiscard]] std::int64_t unused_stored_runs() const { return unused_stored_; }
-
     // Stores one finished run (thread-safe; the block is written and flushed in one go).
     void append(const RunRecord& record, double wall_seconds);
 
@@ -157,7 +153,6 @@ private:
     std::unordered_map<std::string, Stored> index_; // identity -> where its newest block is
     std::vector<std::string> identities_;           // of the study's runs, by run_id (with keys)
     std::set<std::int64_t> completed_;
-    std::int64_t unused_stored_ = 0;
     StudySummary summary_;
 };
 

@@ -328,7 +328,6 @@ void StudyWriter::check_changes(bool overwrite) {
     std::unordered_map<std::string_view, const std::string*> slot_identity; // of the stored runs
     for (const auto& [identity, stored] : index_)
         slot_identity[stored.slot] = &identity;
-    std::int64_t used = 0;
     std::vector<std::string> changes;
     std::int64_t changed_runs = 0;
     const std::int64_t count = keys_ ? keys_->count : 0;
@@ -349,7 +348,6 @@ void StudyWriter::check_changes(bool overwrite) {
         const auto i = static_cast<std::size_t>(id);
         if (index_.count(identities_[i]) != 0) {
             completed_.insert(completed_.end(), id);
-            ++used; // identities of a study are distinct: they differ in algorithm, problem, budget or run
             continue;
         }
         if (slot_taken[i] == 0)
@@ -382,7 +380,6 @@ void StudyWriter::check_changes(bool overwrite) {
         }
         return;
     }
-    unused_stored_ = static_cast<std::int64_t>(index_.size()) - used;
     if (changes.empty() || overwrite)
         return;
     std::string message = dir_.string() + ": " + std::to_string(changed_runs) + " stored run" +

@@ -29,10 +29,9 @@ std::string value_or(const std::map<std::string, std::string>& values, const std
 
 RunKey run_key(const PreparedStudy& study, std::int64_t run_id) {
     const RunRequest request = study.request(run_id);
-    const auto cell = run_id / study.study.runs;
-    const auto a = static_cast<std::size_t>(cell % static_cast<std::int64_t>(study.optimizers.size()));
-    const auto p = static_cast<std::size_t>((cell / static_cast<std::int64_t>(study.optimizers.size())) %
-                                            static_cast<std::int64_t>(study.problems.size()));
+    const PreparedStudy::RunCell cell = study.cell(run_id);
+    const std::size_t a = cell.algorithm;
+    const std::size_t p = cell.problem;
     RunKey key;
     key.algorithm = request.algorithm_spec;
     key.problem = request.problem_spec;
@@ -60,11 +59,8 @@ StudyRunKeys study_run_keys(const PreparedStudy& study) {
     keys.count = study.run_count();
     keys.key = [&study](std::int64_t run_id) { return run_key(study, run_id); };
     keys.names = [&study](std::int64_t run_id) {
-        const std::int64_t cell = run_id / study.study.runs;
-        const auto algorithms = static_cast<std::int64_t>(study.optimizers.size());
-        const auto problems = static_cast<std::int64_t>(study.problems.size());
-        return std::make_pair(study.algorithm_specs[static_cast<std::size_t>(cell % algorithms)],
-                              study.problem_specs[static_cast<std::size_t>((cell / algorithms) % problems)]);
+        const PreparedStudy::RunCell c = study.cell(run_id);
+        return std::make_pair(study.algorithm_specs[c.algorithm], study.problem_specs[c.problem]);
     };
     keys.describe_change = describe_run_change;
     return keys;

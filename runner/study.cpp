@@ -284,30 +284,38 @@ std::int64_t PreparedStudy::run_count() const {
     return static_cast<std::int64_t>(problems.size() * optimizers.size() * study.budgets.size()) * study.runs;
 }
 
-RunRequest PreparedStudy::request(std::int64_t run_id) const {
+PreparedStudy::RunCell PreparedStudy::cell(std::int64_t run_id) const {
     if (run_id < 0 || run_id >= run_count())
         throw std::out_of_range("run_id " + std::to_string(run_id) + " is outside [0, " +
                                 std::to_string(run_count()) + ")");
     const auto algorithm_count = static_cast<std::int64_t>(optimizers.size());
     const auto problem_count = static_cast<std::int64_t>(problems.size());
-    const std::int64_t run_index = run_id % study.runs;
-    const std::int64_t cell = run_id / study.runs; // (budget * problems + problem) * algorithms + algorithm
-    const auto a = static_cast<std::size_t>(cell % algorithm_count);
-    const auto p = static_cast<std::size_t>((cell / algorithm_count) % problem_count);
-    const auto b = static_cast<std::size_t>(cell / algorithm_count / problem_count);
+    const std::int64_t pair = run_id / study.runs; // (budget * problems + problem) * algorithms + algorithm
+    RunCell c;
+    c.algorithm = static_cast<std::size_t>(pair % algorithm_count);
+    c.problem = static_cast<std::size_t>((pair / algorithm_count) % problem_count);
+    c.budget = static_cast<std::size_t>(pair / algorithm_count / problem_count);
+    c.run_index = run_id % study.runs;
+    return c;
+}
+
+RunRequest PreparedStudy::request(std::int64_t run_id) const {
+    const RunCell c = cell(run_id);
+    const std::size_t a = c.algorithm;
+    const std::size_t p = c.problem;
     RunRequest r;
     r.optimizer = optimizers[a].get();
     r.problem = problems[p].get();
     r.algorithm_spec = algorithm_specs[a];
     r.problem_spec = problem_specs[p];
     r.run_id = run_id;
-    r.run_index = run_index;
-    const auto index = static_cast<std::uint64_t>(run_index);
+    r.run_index = c.run_index;
+    const auto index = static_cast<std::uint64_t>(c.run_index);
     r.seed = study.seeds == SeedMode::common
                  ? derive_seed(study.seed, problem_identities[p], index)
                  : derive_seed(study.seed, algorithm_specs[a], problem_identities[p], index);
-    r.budget = study.budgets[b];
-    r.budget_text = budget_texts[b];
+    r.budget = study.budgets[c.budget];
+    r.budget_text = budget_texts[c.budget];
     return r;
 }
 

@@ -79,6 +79,15 @@ struct PreparedStudy {
     std::vector<std::string> parameter_columns;
 
     [[nodiscard]] std::int64_t run_count() const;
+    // Which algorithm, problem and budget (indices into the vectors above) and which repetition
+    // run `run_id` is, by the fixed numbering; throws std::out_of_range outside [0, run_count()).
+    struct RunCell {
+        std::size_t algorithm = 0;
+        std::size_t problem = 0;
+        std::size_t budget = 0;
+        std::int64_t run_index = 0;
+    };
+    [[nodiscard]] RunCell cell(std::int64_t run_id) const;
     // The request of run `run_id` in [0, run_count()); throws std::out_of_range otherwise.
     [[nodiscard]] RunRequest request(std::int64_t run_id) const;
 };

@@ -22,6 +22,7 @@
 #include "results/report.hpp"
 #include "results/store.hpp"
 #include "support/files.hpp"
+#include "support/processes.hpp"
 
 namespace mhb {
 namespace {
@@ -34,38 +35,8 @@ fs::path fresh_dir(const std::string& name) {
     return dir;
 }
 
-// The pids of live (not zombie) processes whose command line (arguments joined by spaces) holds
-// every one of `markers`.
-std::vector<pid_t> processes_with(const std::vector<std::string>& markers) {
-    std::vector<pid_t> found;
-    std::error_code ec;
-    for (const auto& entry : fs::directory_iterator("/proc", ec)) {
-        const std::string name = entry.path().filename().string();
-        if (name.find_first_not_of("0123456789") != std::string::npos || std::stol(name) == ::getpid())
-            continue;
-        std::string command = read_text(entry.path() / "cmdline");
-        std::replace(command.begin(), command.end(), '\0', ' ');
-        if (!std::all_of(markers.begin(), markers.end(),
-                         [&](const std::string& m) { return command.find(m) != std::string::npos; }))
-            continue;
-        const std::string stat = read_text(entry.path() / "stat");
-        const auto paren = stat.rfind(')');
-        if (paren != std::string::npos && paren + 2 < stat.size() && stat[paren + 2] == 'Z')
-            continue;
-        found.push_back(static_cast<pid_t>(std::stol(name)));
-    }
-    return found;
-}
-
-template <class Condition> bool wait_until(Condition condition, double seconds) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (std::chrono::steady_clock::now() < end) {
-        if (condition())
-            return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return condition();
-}
+using mhb::test_support::processes_with;
+using mhb::test_support::wait_until;
 
 int exit_code_of(int status) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);

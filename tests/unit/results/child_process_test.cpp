@@ -14,44 +14,14 @@
 #include <vector>
 
 #include "results/child_process.hpp"
+#include "support/processes.hpp"
 
 namespace mhb {
 namespace {
 namespace fs = std::filesystem;
 
-// The pids of live (not zombie) processes whose command line contains `marker`.
-std::vector<pid_t> processes_with(const std::string& marker) {
-    std::vector<pid_t> found;
-    std::error_code ec;
-    for (const auto& entry : fs::directory_iterator("/proc", ec)) {
-        const std::string name = entry.path().filename().string();
-        if (name.find_first_not_of("0123456789") != std::string::npos)
-            continue;
-        std::ifstream in(entry.path() / "cmdline", std::ios::binary);
-        std::string command((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        for (char& c : command)
-            c = c == '\0' ? ' ' : c;
-        if (command.find(marker) == std::string::npos)
-            continue;
-        std::ifstream stat_file(entry.path() / "stat");
-        std::string stat((std::istreambuf_iterator<char>(stat_file)), std::istreambuf_iterator<char>());
-        const auto paren = stat.rfind(')');
-        if (paren != std::string::npos && paren + 2 < stat.size() && stat[paren + 2] == 'Z')
-            continue;
-        found.push_back(static_cast<pid_t>(std::stol(name)));
-    }
-    return found;
-}
-
-template <class Condition> bool wait_until(Condition condition, double seconds) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (std::chrono::steady_clock::now() < end) {
-        if (condition())
-            return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return condition();
-}
+using mhb::test_support::processes_with;
+using mhb::test_support::wait_until;
 
 std::string unique_marker(const std::string& what) {
     return "mhb-child-test-" + what + "-" + std::to_string(::getpid());
