@@ -102,7 +102,9 @@ po::options_description make_options() {
          "(see scripts/slurm-array.sh)")
         ("threads", po::value<std::string>(), "worker threads (default: all hardware threads); results do not depend on it")
         ("out", po::value<std::string>(), "study directory (default: studies/<preset name, or 'study'>)")
-        ("overwrite", po::bool_switch(), "replace a finished study (or another study's unfinished one) in --out")
+        ("overwrite", po::bool_switch(),
+         "empty the study store in --out and do every run again (needed when a data file, labelled "
+         "algorithm or seed changed under stored runs)")
         ("progress", po::bool_switch(), "draw the progress bar even when stderr is not a terminal")
         ("progress-interval", po::value<double>()->default_value(10.0, "10"),
          "seconds between the plain progress lines written when stderr is not a terminal (batch logs)")
@@ -124,8 +126,10 @@ void print_help(const po::options_description& options) {
            "The whole study, command line and study file together, is checked first and every\n"
            "error reported at once. By default every algorithm starts run r on a problem from the\n"
            "same random stream (common random numbers), so runs pair across algorithms and the\n"
-           "report uses paired tests. Results are identical for any --threads. Ctrl-C keeps the\n"
-           "finished runs; running the same command again resumes the study.\n\n"
+           "report uses paired tests. Results are identical for any --threads. Every finished run is\n"
+           "kept in DIR/store.bin: after Ctrl-C or a kill the same command resumes, and a larger\n"
+           "study into the same --out (more runs, algorithms, problems, budgets) computes only the\n"
+           "runs it lacks. Under `mpirun -np N` (an MPI build) the runs spread over the ranks.\n\n"
         << options << "\nStudy presets (--study NAME; the files are in scripts/studies/):\n"
         << preset_lines()
         << "\nExamples:\n"
