@@ -58,6 +58,14 @@ public:
     // The files the problem's data came from, in the order given; empty for problems that read
     // none (test functions, simulated drives).
     [[nodiscard]] virtual std::vector<DataFile> data_files() const { return {}; }
+
+    // What a user should know about this instance before trusting its results, one sentence
+    // each (e.g. the optimum lies on a face of the search box); printed when a study starts.
+    [[nodiscard]] virtual std::vector<std::string> warnings() const { return {}; }
+
+    // True when one evaluation costs a simulation, so that a population is worth evaluating in
+    // parallel inside a run (Objective::evaluate_batch); cheap functions say false.
+    [[nodiscard]] virtual bool parallel_evaluation() const { return false; }
 };
 
 } // namespace mhb

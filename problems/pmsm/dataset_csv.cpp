@@ -181,10 +181,10 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
     const auto [off, on] = data.state_counts();
     const std::string how = has_injected ? "by its 'injected' column"
                                          : "by |id| > " + format_real(options.injection_threshold) + " A";
-    if (off == 0)
+    if (off == 0 && options.require_both_states)
         ctx.fail(line_number, column_label(has_injected ? "injected" : "id") +
                                   ": no samples in the id = 0 state (" + how + ")");
-    if (on == 0)
+    if (on == 0 && options.require_both_states)
         ctx.fail(line_number, column_label(has_injected ? "injected" : "id") +
                                   ": no samples in the injected state (" + how + ")");
     return data;

@@ -23,6 +23,9 @@ inline constexpr double max_dataset_magnitude = 1e9;
 struct DatasetReadOptions {
     double injection_threshold = 1.0; // A; used only when the file has no `injected` column
     std::size_t min_rows = 4;         // fewer data rows is an error
+    // The steady-state model needs samples of both injection states; the dynamic and output-error
+    // models and `mhbench identify` read any window and judge what it determines.
+    bool require_both_states = true;
 };
 
 // Reads the file once; when `sha256` is given it receives the SHA-256 of exactly the bytes parsed.

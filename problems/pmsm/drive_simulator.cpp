@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "problems/parameters.hpp"
 #include "problems/rng.hpp"
@@ -288,21 +289,30 @@ Dataset simulate_trace(const SimulatorConfig& config, int periods) {
     return run_periods(drive, periods);
 }
 
+const char* to_string(SimulatedWindow window) {
+    return window == SimulatedWindow::steady ? "steady" : "transient";
+}
+
 Dataset simulate_dataset(const SimulatorConfig& config) {
     config.validate();
     const int settle = config.settle_steps();
     const int plateau = config.plateau_steps();
     const int n = config.samples_per_state;
-    // Third plateau (id = 0) ends at settle + 3P, fourth (injected) at settle + 4P.
+    // Third plateau (id = 0) ends at settle + 3P, fourth (injected) at settle + 4P; the transient
+    // window is the n samples either side of the step between them.
     const int end_off = settle + 3 * plateau;
     const int end_on = settle + 4 * plateau;
+    const bool transient = config.window == SimulatedWindow::transient;
     Drive drive(config);
-    const Dataset all = run_periods(drive, end_on);
+    const Dataset all = run_periods(drive, transient ? end_off + n : end_on);
 
     Dataset out;
     out.reserve(static_cast<std::size_t>(2 * n));
-    for (const int end : {end_off, end_on})
-        for (int k = end - n; k < end; ++k) {
+    const std::vector<std::pair<int, int>> stretches =
+        transient ? std::vector<std::pair<int, int>>{{end_off - n, end_off + n}}
+                  : std::vector<std::pair<int, int>>{{end_off - n, end_off}, {end_on - n, end_on}};
+    for (const auto& [begin, end] : stretches)
+        for (int k = begin; k < end; ++k) {
             const auto i = static_cast<std::size_t>(k);
             out.push_back(all.t[i], all.ud[i], all.uq[i], all.id[i], all.iq[i], all.omega[i],
                           all.injected[i]);
@@ -339,6 +349,7 @@ Dataset simulate_dataset(const SimulatorConfig& config) {
     out.set_metadata("plateau_s", config.plateau);
     out.set_metadata("settle_s", config.settle_time);
     out.set_metadata("samples_per_state", static_cast<double>(n));
+    out.set_metadata("window", std::string(to_string(config.window)));
     out.set_metadata("wc_current", config.current_bandwidth);
     out.set_metadata("ws_speed", config.speed_bandwidth);
     out.set_metadata("Kp_d", g.kp_d);

@@ -1,8 +1,8 @@
-// A simulator of the paper's drive: the PMSM in the rotor dq frame (DESIGN 5) with its mechanics,
-// under field-oriented control - a speed PI loop giving the q-current reference, d and q current PI
-// loops with decoupling feed-forward, and the DC-bus voltage limit - sampled and held every
-// control period Ts = 100 us. It produces the steady-state datasets the identification problems
-// are built from.
+// A simulator of a PMSM drive (the paper's motor by default, any motor by its parameters): the PMSM in the
+// rotor dq frame (DESIGN 5) with its mechanics, under field-oriented control - a speed PI loop giving the
+// q-current reference, d and q current PI loops with decoupling feed-forward, and the DC-bus voltage limit -
+// sampled and held every control period Ts = 100 us. It produces the datasets the identification problems are
+// built from: settled plateaus for the steady-state model, a step transient for the dynamic ones.
 //
 // Discretisation. The controller runs once per period; the voltage it computes is held constant
 // in the dq frame over [t_k, t_k + Ts) (an ideal average inverter with a zero-order hold); the
@@ -14,10 +14,14 @@
 //
 // Schedule. The drive starts at the exact equilibrium (id = 0, reference speed, the integrators
 // holding the steady voltages), settles for `settle_time`, then the d-current reference alternates
-// between 0 and `injection_current` every `plateau` (first 0, then injected, ...). The dataset
-// takes the last n samples of the third plateau (id = 0) and of the fourth (injected), i.e. the
-// plateaus [settle + 2P, settle + 3P) and [settle + 3P, settle + 4P). Sample k pairs the voltage
-// commanded for [t_k, t_k + Ts) with the currents and speed measured at t_k.
+// between 0 and `injection_current` every `plateau` (first 0, then injected, ...). The steady
+// window takes the last n samples of the third plateau (id = 0) and of the fourth (injected),
+// i.e. of the plateaus [settle + 2P, settle + 3P) and [settle + 3P, settle + 4P): two settled
+// stretches with a jump in t between them. The transient window takes 2n consecutive samples
+// around the step between them: the last n of the third plateau and the first n of the fourth,
+// so the whole current (and speed) transient of the step is inside - the data of the dynamic and
+// output-error models. Sample k pairs the voltage commanded for [t_k, t_k + Ts) with the
+// currents and speed measured at t_k.
 //
 // Imperfections, each off by default: Gaussian noise on the measured currents (inside the loop,
 // the controller sees it) and on the logged voltages (the motor receives the commanded voltage),
@@ -46,6 +50,10 @@ struct ControllerGains {
 ControllerGains pole_zero_gains(const MotorParameters& motor, double current_bandwidth,
                                 double speed_bandwidth);
 
+// Which samples simulate_dataset() keeps (see the schedule above).
+enum class SimulatedWindow { steady, transient };
+const char* to_string(SimulatedWindow window);
+
 struct SimulatorConfig {
     MotorParameters motor = paper_motor();
     OperatingCondition condition;
@@ -68,6 +76,7 @@ struct SimulatorConfig {
     int delay_periods = 0;          // 0 or 1: the motor receives the previous period's voltage
     bool stator_frame_hold = false; // hold the voltage in the stator frame (a real inverter, no
                                     // angle compensation) instead of the rotor dq frame
+    SimulatedWindow window = SimulatedWindow::steady;
 
     // Throws std::invalid_argument naming the first bad field.
     void validate() const;
@@ -78,7 +87,7 @@ struct SimulatorConfig {
 // Every control period from t = 0 for `periods` periods; `injected` is the reference state.
 Dataset simulate_trace(const SimulatorConfig& config, int periods);
 
-// The default steady-state dataset (see the schedule above), with metadata describing the run.
+// The dataset of `config.window` (see the schedule above), with metadata describing the run.
 Dataset simulate_dataset(const SimulatorConfig& config);
 
 } // namespace mhb::pmsm

@@ -27,6 +27,12 @@ inline MotorParameters paper_motor() {
     return MotorParameters{};
 }
 
+// An interior-PM motor (L_d != L_q, reluctance torque), the second motor of the shared test data
+// (tests/data/pmsm/README.md): 0.9 ohm, 6 and 14 mH, 0.17 Wb, p = 3.
+inline MotorParameters ipm_motor() {
+    return MotorParameters{0.9, 6e-3, 14e-3, 0.17, 3, 2e-4, 1e-4};
+}
+
 // Where the drive runs: a constant speed reference and a constant load torque.
 struct OperatingCondition {
     double speed_rpm = 2500.0; // mechanical speed reference, rpm

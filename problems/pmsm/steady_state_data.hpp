@@ -1,14 +1,24 @@
 // The samples of the steady-state fitness (the paper's eq. 11), laid out for fast evaluation.
-// Sample k of the id = 0 state is paired with sample k of the injected state, k = 1..n with
-// n = min of the two counts (samples beyond n in the larger state are not used), and each of the
-// four residuals gets its weight:
+//
+// Which samples. Eq. 2 holds only where the currents and speed have settled, so:
+//  - a switch of the injection state seen between two consecutive rows (one sampling period
+//    apart) starts a transient, and the rows of the new state less than `settle_time` after the
+//    first row of that state are not used (across a jump in t the switch itself is not in the
+//    log and nothing is dropped: a logged window of the settled end of a plateau is used whole);
+//  - of the rows left, the last n of each state are paired, n = min of the two counts: the
+//    settled ends of the plateaus, as the paper takes them (a longer state loses its first rows).
+// Sample k of the id = 0 state is paired with sample k of the injected state, k = 1..n, and
+// each of the four residuals gets its weight:
 //   f = sum_k w1 r_d(0,k)^2 + w2 r_q(0,k)^2 + w3 r_d(1,k)^2 + w4 r_q(1,k)^2,
 //   r_d = ud - (Rs id - Lq omega iq),   r_q = uq - (Rs iq + Ld omega id + psi omega)   (eq. 2).
 // The arrays hold the n id = 0 samples followed by the n injected ones, with the products
-// omega*iq and omega*id computed once.
+// omega*iq and omega*id computed once. Several datasets (operating conditions fitted with one
+// parameter vector) are paired each on its own and concatenated.
 #pragma once
 
 #include <Eigen/Core>
+#include <string>
+#include <vector>
 
 #include "problems/pmsm/dataset.hpp"
 
@@ -39,8 +49,16 @@ struct WeightedSystem {
 };
 WeightedSystem weighted_system(const SteadyStateData& data);
 
-// Pairs the samples of `data`. Throws std::invalid_argument if a state has no sample or a
+// 10 ms: a current loop of ~3000 rad/s settles in ~1 ms, the paper's speed loop in a few; a
+// motor with slower loops needs a longer setting.
+inline constexpr double default_settle_time = 0.01;
+
+// Pairs the samples of `data`. Throws std::invalid_argument if a state has no sample left or a
 // weight is negative or not finite.
-SteadyStateData pair_samples(const Dataset& data, const FitnessWeights& weights = {});
+SteadyStateData pair_samples(const Dataset& data, const FitnessWeights& weights = {},
+                             double settle_time = default_settle_time);
+// The datasets paired one by one and concatenated; errors name the dataset by `sources`.
+SteadyStateData pair_samples(const std::vector<Dataset>& datasets, const std::vector<std::string>& sources,
+                             const FitnessWeights& weights = {}, double settle_time = default_settle_time);
 
 } // namespace mhb::pmsm

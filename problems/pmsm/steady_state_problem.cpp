@@ -1,6 +1,9 @@
 #include "problems/pmsm/steady_state_problem.hpp"
 
+#include <cmath>
 #include <stdexcept>
+
+#include "problems/parameters.hpp"
 
 namespace mhb::pmsm {
 
@@ -10,8 +13,13 @@ Box paper_bounds() {
 
 SteadyStateProblem::SteadyStateProblem(const Dataset& data, const FitnessWeights& weights, Box bounds,
                                        FitnessEvaluation evaluation)
-    : samples_(pair_samples(data, weights)), box_(std::move(bounds)),
-      direct_(evaluation == FitnessEvaluation::direct), truth_(data.true_parameters()) {
+    : SteadyStateProblem(pair_samples(data, weights), data.true_parameters(), std::move(bounds), evaluation) {
+}
+
+SteadyStateProblem::SteadyStateProblem(SteadyStateData samples, std::optional<Eigen::Vector4d> truth,
+                                       Box bounds, FitnessEvaluation evaluation)
+    : samples_(std::move(samples)), box_(std::move(bounds)), direct_(evaluation == FitnessEvaluation::direct),
+      truth_(std::move(truth)) {
     box_.validate("pmsm");
     if (box_.dimension() != 4)
         throw std::invalid_argument("pmsm: bounds must have 4 coordinates (Rs, Ld, Lq, psi)");
@@ -36,6 +44,26 @@ std::optional<Eigen::VectorXd> SteadyStateProblem::true_parameters() const {
     if (!truth_)
         return std::nullopt;
     return Eigen::VectorXd(*truth_);
+}
+
+std::vector<std::string> SteadyStateProblem::warnings() const {
+    std::vector<std::string> out;
+    if (least_squares_.inside_box)
+        return out;
+    const char* names[] = {"Rs", "Ld", "Lq", "psi"};
+    const char* keys[] = {"rs", "ld", "lq", "psi"};
+    for (int j = 0; j < 4; ++j) {
+        const double x = least_squares_.box_theta[j];
+        const bool low = x == box_.lower[j];
+        if (!low && x != box_.upper[j])
+            continue;
+        out.push_back(std::string("the least-squares optimum lies outside the search box: f* is the "
+                                  "box-constrained optimum, with ") +
+                      names[j] + " on its " + (low ? "lower" : "upper") + " bound " + format_real(x) +
+                      " (unconstrained: " + names[j] + " = " + format_real(least_squares_.theta[j]) +
+                      "); widen it (" + keys[j] + "=lo:hi) if the motor may lie there");
+    }
+    return out;
 }
 
 } // namespace mhb::pmsm

@@ -32,6 +32,9 @@ class SteadyStateProblem final : public Problem {
 public:
     SteadyStateProblem(const Dataset& data, const FitnessWeights& weights, Box bounds,
                        FitnessEvaluation evaluation = FitnessEvaluation::expanded);
+    // Samples already paired (several datasets: pair_samples), with the true values if known.
+    SteadyStateProblem(SteadyStateData samples, std::optional<Eigen::Vector4d> truth, Box bounds,
+                       FitnessEvaluation evaluation = FitnessEvaluation::expanded);
 
     std::string name() const override { return "pmsm"; }
     Eigen::Index dimension() const override { return 4; }
@@ -41,6 +44,9 @@ public:
     std::vector<std::string> parameter_names() const override { return {"Rs", "Ld", "Lq", "psi"}; }
     std::optional<Eigen::VectorXd> true_parameters() const override;
     std::vector<DataFile> data_files() const override { return files_; }
+    // Says when the box-constrained optimum lies on a face of the box (the box, not the data,
+    // then decides the answer).
+    std::vector<std::string> warnings() const override;
 
     // Names the files the dataset was read from (the family does, for `data=`).
     void set_data_files(std::vector<DataFile> files) { files_ = std::move(files); }

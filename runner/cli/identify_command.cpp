@@ -1,24 +1,35 @@
-// `mhbench identify`: the least-squares identification of Rs, Ld, Lq and psi from a user's
-// steady-state dataset (eq. 11 of Li, Wang and Ji 2017, solved exactly), reported the way a motor
-// engineer can use it: each estimate with its standard error, the fit's residuals, the condition
-// of the problem and, when the file carries the true values, the errors.
+// `mhbench identify`: identification of Rs, Ld, Lq and psi (and optionally the inverter's
+// dead-time voltage) of a PMSM from a user's logged dq data, reported the way a motor engineer
+// can use it: each estimate with its standard error and a plain verdict (determined / poorly
+// determined / not identifiable from this data) saying what to change in the experiment, the
+// residuals (RMS, maximum, lag-1 autocorrelation, which flags model error), the condition of the
+// problem and, when the file carries the true values, the errors.
+//
+// Models: steady (eq. 11 of Li, Wang and Ji 2017) and dynamic (discrete dq voltage equations
+// with di/dt) are linear in the parameters and solved exactly; output (output error) is not, so
+// an optimiser is run from several seeds and their spread is reported besides the linearised
+// standard errors.
 #include <boost/program_options.hpp>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "problems/parameters.hpp"
-#include "problems/pmsm/dataset_csv.hpp"
-#include "problems/pmsm/least_squares.hpp"
+#include "problems/pmsm/dynamic_model.hpp"
+#include "problems/pmsm/identifiability.hpp"
+#include "problems/pmsm/pmsm_sources.hpp"
+#include "problems/pmsm/segments.hpp"
 #include "problems/pmsm/steady_state_data.hpp"
-#include "problems/pmsm/steady_state_problem.hpp"
+#include "problems/problem_registry.hpp"
 #include "problems/text_excerpt.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
+#include "runner/output_error_identification.hpp"
 
 namespace mhb::cli {
 
@@ -42,130 +53,329 @@ pmsm::FitnessWeights parse_weights(const std::string& text) {
     return {w[0], w[1], w[2], w[3]};
 }
 
-std::string line(const char* format, double a, double b, double c) {
-    char buf[200];
-    std::snprintf(buf, sizeof buf, format, a, b, c);
+std::string format(const char* f, double a, double b = 0, double c = 0) {
+    char buf[240];
+    std::snprintf(buf, sizeof buf, f, a, b, c);
     return buf;
 }
 
-// A percentage, or "n/a" (same width) where it has no value: an estimate or a true value of 0.
-std::string percent_text(double value, const char* format) {
-    if (!std::isfinite(value))
-        return "      n/a  ";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, value);
-    return buf;
+// A percentage, or "n/a" (same width) where it has no value.
+std::string percent_text(double value, const char* f) {
+    return std::isfinite(value) ? format(f, value) : std::string("      n/a  ");
+}
+
+double positive_option(const std::string& text, const char* name) {
+    double v = 0;
+    if (!parse_real(text, v) || !(v > 0))
+        throw std::invalid_argument(std::string("--") + name + " = " + value_excerpt(text) +
+                                    " is not a number > 0");
+    return v;
+}
+
+long long integer_in(const std::string& text, const char* name, long long lo, long long hi) {
+    long long v = 0;
+    if (!parse_integer(text, v))
+        throw std::invalid_argument(std::string("--") + name + " = " + value_excerpt(text) + " " +
+                                    integer_refusal(text, lo, hi));
+    if (v < lo || v > hi)
+        throw std::invalid_argument(std::string("--") + name + " = " + value_excerpt(text) + " is outside [" +
+                                    std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return v;
+}
+
+// The steady model as a linear model. With settled samples of both states in every dataset
+// these are eq. 11's paired rows, exactly the `pmsm` problem's; otherwise (no injection, say)
+// every settled row with weight 0.25, so that the verdict can say what the data lack instead of
+// refusing them.
+pmsm::LinearModel steady_model(const pmsm::PmsmSources& data, const pmsm::FitnessWeights& weights,
+                               double settle, double& volts_per_unit) {
+    pmsm::LinearModel model;
+    model.parameter_names = {"Rs", "Ld", "Lq", "psi"};
+    model.run_starts.clear();
+    pmsm::SteadyStateData samples;
+    std::vector<Eigen::Index> block_sizes;
+    try {
+        samples = pmsm::pair_samples(data.datasets, data.names, weights, settle);
+        for (std::size_t i = 0; i < data.datasets.size(); ++i) {
+            const Eigen::Index n = pmsm::pair_samples(data.datasets[i], weights, settle).pairs;
+            block_sizes.insert(block_sizes.end(), {n, n});
+        }
+    } catch (const std::invalid_argument&) {
+        // One state has no settled sample: every row as it is, weight 0.25 (eq. 2 stacked).
+        Eigen::Index rows = 0;
+        for (const pmsm::Dataset& d : data.datasets)
+            rows += static_cast<Eigen::Index>(d.size());
+        model.A = Eigen::MatrixXd::Zero(2 * rows, 4);
+        model.b.resize(2 * rows);
+        Eigen::Index r = 0;
+        for (const pmsm::Dataset& d : data.datasets) {
+            model.run_starts.push_back(r);
+            for (std::size_t k = 0; k < d.size(); ++k, ++r) {
+                model.A.row(r) << 0.5 * d.id[k], 0.0, -0.5 * d.omega[k] * d.iq[k], 0.0;
+                model.b[r] = 0.5 * d.ud[k];
+                model.A.row(rows + r) << 0.5 * d.iq[k], 0.5 * d.omega[k] * d.id[k], 0.0, 0.5 * d.omega[k];
+                model.b[rows + r] = 0.5 * d.uq[k];
+            }
+        }
+        model.d_rows = rows;
+        volts_per_unit = 2.0;
+        return model;
+    }
+    const pmsm::WeightedSystem system = pmsm::weighted_system(samples);
+    model.A = system.A;
+    model.b = system.b;
+    model.d_rows = system.A.rows() / 2;
+    Eigen::Index offset = 0;
+    for (const Eigen::Index n : block_sizes) {
+        model.run_starts.push_back(offset);
+        offset += n;
+    }
+    const bool equal = weights.w1 == weights.w2 && weights.w2 == weights.w3 && weights.w3 == weights.w4;
+    volts_per_unit = equal && weights.w1 > 0 ? 1.0 / std::sqrt(weights.w1) : 1.0;
+    return model;
+}
+
+struct Options {
+    std::string data;
+    std::string model = "steady";
+    std::string weights = "0.25,0.25,0.25,0.25";
+    std::string threshold = "1";
+    std::string settle = format_real(pmsm::default_settle_time);
+    bool fit_vdt = false;
+    std::string smooth = "0";
+    std::string substeps = "2";
+    OutputIdentificationOptions output;
+    std::string seeds = "8", evaluations = "20000", threads = "0";
+};
+
+void print_data_summary(std::ostream& out, const pmsm::PmsmSources& data) {
+    for (std::size_t i = 0; i < data.datasets.size(); ++i) {
+        const pmsm::Dataset& d = data.datasets[i];
+        const auto [off, on] = d.state_counts();
+        out << (i == 0 ? "data:    " : "         ") << data.names[i] << ": " << d.size() << " samples ("
+            << off << " at id = 0, " << on << " injected)";
+        try {
+            const double Ts = pmsm::sampling_period(d, data.names[i]);
+            const auto stretches = pmsm::contiguous_segments(d, Ts).size();
+            out << ", Ts = " << format("%.6g", Ts) << " s, " << stretches
+                << (stretches == 1 ? " stretch" : " stretches");
+        } catch (const std::invalid_argument&) {
+            out << ", no time step";
+        }
+        out << '\n';
+    }
 }
 
 } // namespace
 
 int run_identify_command(const std::vector<std::string>& args) {
-    std::string data_path;
-    std::string weights_text = "0.25,0.25,0.25,0.25";
-    std::string threshold_text = "1";
+    Options o;
     po::options_description options(
-        "mhbench identify: estimate Rs, Ld, Lq and psi of a PMSM from steady-state dq data by exact\n"
-        "least squares on the paper's fitness (Li, Wang and Ji 2017, eq. 11), with standard errors.\n"
-        "The dataset CSV: optional '# key=value' lines (Rs, Ld, Lq, psi give true values), then the\n"
-        "header t,ud,uq,id,iq,omega[,injected] in s, V, V, A, A, electrical rad/s; samples of the\n"
-        "id = 0 state and of the injected state (the 'injected' column, or |id| above a threshold).\n\n"
-        "Usage: mhbench identify --data FILE [options]\n\nOptions");
+        "mhbench identify: estimate Rs, Ld, Lq and psi of a PMSM (and optionally the inverter's dead-time\n"
+        "voltage) from logged dq data, with standard errors, a verdict per parameter saying whether the "
+        "data\n"
+        "determine it and what to change if not, and a residual report.\n"
+        "Models: steady  eq. 11 of Li, Wang and Ji (2017) on the settled ends of the injection plateaus\n"
+        "                (exact least squares);\n"
+        "        dynamic the discrete dq voltage equations with di/dt on transient data (exact least "
+        "squares);\n"
+        "        output  output error: the currents simulated from the measured voltages and speed, fitted "
+        "by\n"
+        "                an optimiser from several seeds (their spread is reported).\n"
+        "The dataset CSV: optional '# key=value' lines (Rs, Ld, Lq, psi give true values), then the header\n"
+        "t,ud,uq,id,iq,omega[,injected] in s, V, V, A, A, electrical rad/s. Several files joined by '+' are\n"
+        "fitted jointly (several operating conditions, one motor).\n\n"
+        "Usage: mhbench identify --data FILE[+FILE...] [--model steady|dynamic|output] [options]\n\nOptions");
     // clang-format off
     options.add_options()
         ("help,h", "this text")
-        ("data,d", po::value<std::string>(&data_path), "dataset CSV; required")
-        ("weights", po::value<std::string>(&weights_text)->default_value(weights_text),
-         "w1,w2,w3,w4 of eq. 11: d and q residuals of the id = 0 state, then of the injected state")
-        ("id-threshold", po::value<std::string>(&threshold_text)->default_value(threshold_text),
-         "without an 'injected' column, |id| above this (A) marks the injected state");
+        ("data,d", po::value<std::string>(&o.data), "dataset CSV(s), joined by '+'; required")
+        ("model,m", po::value<std::string>(&o.model)->default_value(o.model), "steady, dynamic or output")
+        ("weights", po::value<std::string>(&o.weights)->default_value(o.weights),
+         "steady: w1,w2,w3,w4 of eq. 11 (d and q residuals of the id = 0 state, then of the injected state)")
+        ("id-threshold", po::value<std::string>(&o.threshold)->default_value(o.threshold),
+         "without an 'injected' column, |id| above this (A) marks the injected state")
+        ("settle", po::value<std::string>(&o.settle)->default_value(o.settle),
+         "steady: samples less than this (s) after a switch of the injection state are not used")
+        ("fit-vdt", po::bool_switch(&o.fit_vdt),
+         "dynamic, output: also fit the inverter's dead-time voltage Vdt (V), which otherwise biases Rs")
+        ("smooth", po::value<std::string>(&o.smooth)->default_value(o.smooth),
+         "dynamic: centred moving average of 2K + 1 samples on every signal before di/dt (noisy currents)")
+        ("substeps", po::value<std::string>(&o.substeps)->default_value(o.substeps),
+         "output: RK4 steps per sampling period")
+        ("algorithm", po::value<std::string>(&o.output.algorithm)->default_value(o.output.algorithm),
+         "output: the optimiser (a spec, as in mhbench run); cmaes restarts with growing populations (IPOP)")
+        ("seeds", po::value<std::string>(&o.seeds)->default_value(o.seeds), "output: independent runs")
+        ("evaluations", po::value<std::string>(&o.evaluations)->default_value(o.evaluations),
+         "output: evaluations per run")
+        ("threads", po::value<std::string>(&o.threads)->default_value(o.threads), "output: threads (0: all cores)");
     // clang-format on
     po::variables_map vm;
     if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
         return exit_ok;
-    if (data_path.empty())
+    if (o.data.empty())
         throw std::invalid_argument("--data FILE is required (see mhbench identify --help)");
-    double threshold = 0;
-    if (!parse_real(threshold_text, threshold) || !(threshold > 0))
-        throw std::invalid_argument("--id-threshold = " + value_excerpt(threshold_text) +
-                                    " is not a number > 0");
-    const pmsm::FitnessWeights weights = parse_weights(weights_text);
-
+    if (o.model != "steady" && o.model != "dynamic" && o.model != "output")
+        throw std::invalid_argument("--model = " + value_excerpt(o.model) +
+                                    " is not one of steady, dynamic, output");
+    const pmsm::ModelKind kind = o.model == "steady"    ? pmsm::ModelKind::steady
+                                 : o.model == "dynamic" ? pmsm::ModelKind::dynamic
+                                                        : pmsm::ModelKind::output;
     pmsm::DatasetReadOptions read_options;
-    read_options.injection_threshold = threshold;
-    const pmsm::Dataset data = pmsm::read_dataset_csv(data_path, read_options);
-    const pmsm::SteadyStateData samples = pmsm::pair_samples(data, weights);
-    // Data that do not determine the parameters are failed work (exit 1), not a bad command line.
-    pmsm::LeastSquaresResult r;
+    read_options.injection_threshold = positive_option(o.threshold, "id-threshold");
+    read_options.require_both_states = false;
+    const pmsm::FitnessWeights weights = parse_weights(o.weights);
+    double settle = 0;
+    if (!parse_real(o.settle, settle) || settle < 0)
+        throw std::invalid_argument("--settle = " + value_excerpt(o.settle) + " is not a number >= 0");
+    const int smoothing = static_cast<int>(integer_in(o.smooth, "smooth", 0, 50));
+    const int substeps = static_cast<int>(integer_in(o.substeps, "substeps", 1, 1000));
+    o.output.seeds = static_cast<int>(integer_in(o.seeds, "seeds", 1, 10000));
+    o.output.evaluations = integer_in(o.evaluations, "evaluations", 1, 1000000000000LL);
+    o.output.threads = static_cast<int>(integer_in(o.threads, "threads", 0, 4096));
+    if (kind == pmsm::ModelKind::steady && (o.fit_vdt || vm["smooth"].defaulted() == false))
+        throw std::invalid_argument("--fit-vdt and --smooth apply to --model dynamic or output");
+
+    const pmsm::PmsmSources data = pmsm::read_sources(o.data, read_options);
+
+    // The linear model whose fit gives estimates, standard errors and verdicts.
+    pmsm::LinearModel model;
+    double volts_per_unit = 2.0; // the dynamic model's rows carry weight 0.25: half a volt per volt
+    std::optional<OutputIdentification> output;
+    std::string title;
     try {
-        r = pmsm::solve_least_squares(samples);
+        if (kind == pmsm::ModelKind::steady) {
+            model = steady_model(data, weights, settle, volts_per_unit);
+            title = "steady-state model (eq. 11 of Li, Wang and Ji 2017), exact least squares";
+        } else if (kind == pmsm::ModelKind::dynamic) {
+            pmsm::DynamicModelOptions dynamic;
+            dynamic.fit_dead_time = o.fit_vdt;
+            dynamic.smoothing = smoothing;
+            model = pmsm::dynamic_model(data.datasets, data.names, dynamic);
+            title = "dynamic model (discrete dq voltage equations with di/dt), exact least squares";
+        } else {
+            std::string spec = "pmsm:model=output,data=" + o.data + ",substeps=" + std::to_string(substeps) +
+                               ",id_threshold=" + o.threshold;
+            if (o.fit_vdt)
+                spec += ",fit_vdt=on";
+            const auto problem = builtin_problems().create(Spec::parse(spec));
+            const auto& output_problem = dynamic_cast<const pmsm::OutputErrorProblem&>(*problem);
+            output = identify_output_error(output_problem, o.output);
+            model = output->linearised;
+            volts_per_unit = 1.0;
+            title = "output-error model (simulated against measured currents), " + o.output.algorithm +
+                    " from " + std::to_string(o.output.seeds) + " seeds of " +
+                    std::to_string(o.output.evaluations) + " evaluations";
+        }
     } catch (const std::invalid_argument& e) {
-        throw std::runtime_error(data_path + ": " + e.what());
+        // Data that do not make the model are failed work (exit 1), not a bad command line.
+        throw std::runtime_error(e.what());
     }
-    // Never print inf or nan as an estimate or a standard error: say why there is none.
-    if (!r.standard_error.allFinite()) {
-        if (r.equations <= 4)
-            throw std::runtime_error(data_path + ": " + std::to_string(r.equations) +
-                                     " equations for 4 parameters leave no residual to estimate the "
-                                     "standard errors from; give more samples in each state");
-        throw std::runtime_error(data_path + ": the standard errors are not finite (condition number " +
-                                 line("%.3g", r.condition_number, 0, 0) +
-                                 "): the data do not determine the four parameters");
+    const pmsm::LinearFit fit = pmsm::fit_linear_model(model);
+    const pmsm::Identifiability judged = pmsm::judge_identifiability(model, fit, kind);
+    const Eigen::VectorXd estimate = output ? output->best_x : fit.theta;
+    const Eigen::Index k = model.parameters();
+
+    // True values from the metadata, for the model's coordinates.
+    std::optional<Eigen::VectorXd> truth;
+    if (const auto nominal = data.nominal_parameters()) {
+        truth = Eigen::VectorXd(k);
+        truth->head<4>() = *nominal;
+        if (k == 5)
+            (*truth)[4] = pmsm::dead_time_voltage(data.datasets.front());
     }
-    const auto truth = data.true_parameters();
-    const auto [off, on] = data.state_counts();
 
     std::ostream& out = std::cout;
-    out << "PMSM steady-state identification (least squares on eq. 11 of Li, Wang and Ji 2017)\n"
-        << "data:    " << data_path << ": " << data.size() << " samples, " << off << " at id = 0 and " << on
-        << " injected; " << samples.pairs << " pairs used\n"
-        << "weights: " << format_real(weights.w1) << ' ' << format_real(weights.w2) << ' '
-        << format_real(weights.w3) << ' ' << format_real(weights.w4) << "\n\n";
-    const char* names[] = {"Rs  [ohm]", "Ld  [H]  ", "Lq  [H]  ", "psi [Wb] "};
+    out << "PMSM identification: " << title << '\n';
+    print_data_summary(out, data);
+    out << (volts_per_unit == 1.0 && kind != pmsm::ModelKind::output ? "weights: " + o.weights + "\n" : "")
+        << '\n';
+    const char* units[] = {"[ohm]", "[H]  ", "[H]  ", "[Wb] ", "[V]  "};
     out << "parameter   estimate        std. error      (% of est.)";
+    if (output)
+        out << "  spread over seeds";
     if (truth)
         out << "   true value      error";
     out << '\n';
-    for (int j = 0; j < 4; ++j) {
+    for (Eigen::Index j = 0; j < k; ++j) {
         char buf[240];
-        const double relative = 100.0 * r.standard_error[j] / std::fabs(r.theta[j]);
-        std::snprintf(buf, sizeof buf, "%s   %-14.8g  %-14.4g  ", names[j], r.theta[j], r.standard_error[j]);
+        const double relative = 100.0 * fit.standard_error[j] / std::fabs(estimate[j]);
+        // Never a nan or an inf as a number: "n/a" where the data give none.
+        const bool determined = fit.determined[static_cast<std::size_t>(j)];
+        std::snprintf(buf, sizeof buf, "%-3s %s   %-14s  %-14s  ",
+                      model.parameter_names[static_cast<std::size_t>(j)].c_str(), units[j],
+                      determined ? format("%.8g", estimate[j]).c_str() : "n/a",
+                      std::isfinite(fit.standard_error[j]) ? format("%.4g", fit.standard_error[j]).c_str()
+                                                           : "n/a");
         out << buf << percent_text(relative, "%9.3g %%");
+        if (output) {
+            std::snprintf(buf, sizeof buf, "  %-17.4g", output->spread[j]);
+            out << buf;
+        }
         if (truth) {
-            std::snprintf(buf, sizeof buf, "     %-14.8g  ", (*truth)[j]);
-            out << buf << percent_text(100.0 * (r.theta[j] - (*truth)[j]) / (*truth)[j], "%+9.3g %%");
+            std::snprintf(buf, sizeof buf, "    %-14.8g  ", (*truth)[j]);
+            out << buf
+                << percent_text(determined ? 100.0 * (estimate[j] - (*truth)[j]) / (*truth)[j] : NAN,
+                                "%+9.3g %%");
         }
         out << '\n';
     }
-    out << '\n'
-        << line("f* (eq. 11 at the estimate) = %.10g;  residual RMS: d axis %.4g V, q axis %.4g V\n", r.f,
-                r.residual_rms_d, r.residual_rms_q);
-    const double correlation = r.covariance(0, 3) / std::sqrt(r.covariance(0, 0) * r.covariance(3, 3));
-    out << line("%.0f equations, 4 parameters; condition number %.4g (columns scaled to unit norm); ",
-                static_cast<double>(r.equations), r.condition_number, 0)
-        << "correlation of Rs and psi "
-        << (std::isfinite(correlation) ? line("%.3f", correlation, 0, 0) : std::string("n/a (an exact fit)"))
-        << '\n';
-    if (truth && std::isfinite(samples.fitness(*truth))) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf,
-                      "f at the true values = %.10g (f - f* = %.4g: how far the data move the optimum)\n",
-                      samples.fitness(*truth), samples.fitness(*truth) - r.f);
-        out << buf;
+    out << '\n';
+    if (kind == pmsm::ModelKind::steady)
+        out << format("f* (eq. 11 at the estimate) = %.10g\n", fit.f);
+    else if (kind == pmsm::ModelKind::dynamic)
+        out << format("f* (sum of 0.25 (r_d^2 + r_q^2) at the estimate) = %.10g\n", fit.f);
+    else
+        out << format(
+            "f (sum of squared current errors at the estimate) = %.10g A^2; %.0f of %.0f seeds reached it "
+            "(to 1e-6 relative)\n",
+            output->best_f, output->seeds_at_best, static_cast<double>(output->seed_f.size()));
+    const char* unit = kind == pmsm::ModelKind::output ? "A" : (volts_per_unit == 1.0 ? "(weighted)" : "V");
+    for (const auto& [axis, stats] : {std::pair{"d", &fit.residual_d}, std::pair{"q", &fit.residual_q}})
+        out << "residuals, " << axis << " axis: RMS " << format("%.4g ", stats->rms * volts_per_unit) << unit
+            << format(", max %.4g ", stats->max_abs * volts_per_unit) << unit << ", lag-1 autocorrelation "
+            << (std::isfinite(stats->lag1) ? format("%.3f", stats->lag1) : std::string("n/a")) << '\n';
+    out << format("%.0f equations, %.0f parameters; condition number ",
+                  static_cast<double>(model.equations()), static_cast<double>(k))
+        << (std::isfinite(fit.condition_number) ? format("%.4g", fit.condition_number)
+                                                : std::string("infinite"))
+        << " (columns scaled to unit norm)\n";
+    if (fit.covariance.allFinite() && k >= 4) {
+        const double correlation =
+            fit.covariance(0, 3) / std::sqrt(fit.covariance(0, 0) * fit.covariance(3, 3));
+        if (std::isfinite(correlation))
+            out << format("correlation of the Rs and psi estimates: %.3f\n", correlation);
     }
-    out << "\nStandard errors are sigma^2 (A^T W A)^-1 from the residual: they measure how far noise alone "
-           "can\n"
-           "move the estimate (one sigma), assuming independent residuals. They do not cover systematic\n"
-           "errors - inverter dead time and delay, a voltage offset - which bias Rs above all: its only\n"
-           "signal is Rs id in ud (about 0.66 V at -2 A), and Rs and psi are strongly correlated.\n";
-    for (int j = 0; j < 4; ++j)
-        if (r.theta[j] <= 0)
-            out << "warning: " << names[j] << " came out non-positive: the data do not support the model\n";
-    if (!pmsm::paper_bounds().contains(r.theta))
-        out << "note: the estimate lies outside the paper's search box (Rs 0-0.5, Ld and Lq 0-0.01, psi "
-               "0-0.1); an\n"
-               "optimiser confined to that box cannot reach it (pmsm: reports the box-constrained optimum)\n";
-    if (r.standard_error[0] > 0.1 * std::fabs(r.theta[0]))
-        out << "warning: Rs is determined to worse than 10 %; a larger injection or more samples help\n";
+
+    out << "\nWhat the data determine:\n";
+    const double residual_rms =
+        std::sqrt((fit.residual_d.rms * fit.residual_d.rms + fit.residual_q.rms * fit.residual_q.rms) / 2.0);
+    for (const pmsm::ParameterJudgement& p : judged.parameters) {
+        out << "  " << p.name << ": " << pmsm::to_string(p.verdict) << " (" << p.reason << ")";
+        if (std::isfinite(p.signal_rms) && residual_rms > 0)
+            out << format("; its term is %.3g ", p.signal_rms * volts_per_unit) << unit
+                << format(" RMS in the equations, %.3g times the residual RMS", p.signal_rms / residual_rms);
+        out << '\n';
+        if (!p.advice.empty())
+            out << "    to determine it: " << p.advice << '\n';
+    }
+    for (const std::string& note : judged.notes)
+        out << "  note: " << note << '\n';
+    out << "\nStandard errors come from the residual variance and the fit's covariance"
+        << (output ? " linearised at the estimate" : "")
+        << ": how far noise alone\n"
+           "moves the estimate (one sigma), assuming independent residuals. They do not cover systematic "
+           "errors\n"
+           "(inverter dead time and delay, a voltage offset, a model that misses part of the data), which "
+           "show\n"
+           "as correlated residuals above.\n";
+    if (output)
+        out << "The spread over seeds measures how reliably the optimiser finds the estimate, not the data's "
+               "noise.\n";
+    for (Eigen::Index j = 0; j < k; ++j)
+        if (estimate[j] <= 0 && j < 4 && fit.determined[static_cast<std::size_t>(j)])
+            out << "warning: " << model.parameter_names[static_cast<std::size_t>(j)]
+                << " came out non-positive: the data do not support the model\n";
     return exit_ok;
 }
 

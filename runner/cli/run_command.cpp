@@ -335,6 +335,13 @@ int run_run_command(const std::vector<std::string>& args) {
         std::filesystem::remove(shard_file);
 
     const bool quiet = vm["quiet"].as<bool>();
+    // What a problem knows to be doubtful about itself (an optimum on a face of the box) is said
+    // before the runs, once per problem.
+    if (!quiet)
+        for (std::size_t p = 0; p < prepared->problems.size(); ++p)
+            for (const std::string& warning : prepared->problems[p]->warnings())
+                std::cerr << "mhbench run: warning: " << prepared->problem_specs[p] << ": " << warning
+                          << '\n';
     const bool forced = vm["progress"].as<bool>();
     // A terminal gets the bar (after a second, so short studies print nothing); a batch log gets a
     // plain line every --progress-interval seconds; --quiet gets neither.

@@ -12,6 +12,7 @@
 #include "problems/pmsm/drive_simulator.hpp"
 #include "problems/pmsm/least_squares.hpp"
 #include "problems/pmsm/steady_state_problem.hpp"
+#include "problems/problem_registry.hpp"
 #include "problems/rng.hpp"
 
 namespace mhb::pmsm {
@@ -62,19 +63,27 @@ TEST(PmsmLeastSquares, RecoversParametersFromNoiseFreeSimulation) {
 }
 
 // The fitness is eq. 11 literally: check it against a plain loop over the paired samples with
-// unequal weights, and the pairing rule (sample k of each state; extra samples unused).
+// unequal weights, and the pairing rule (the last n samples of each state, in order: an extra
+// sample at the start of the longer state is unused).
 TEST(PmsmLeastSquares, FitnessIsEq11WithPairedSamples) {
     const Eigen::Vector4d truth(0.33, 3.24e-3, 3.24e-3, 0.0776);
-    Dataset d = eq2_dataset(truth, 5);
-    d.push_back(1.0, 100.0, 100.0, -2.0, 8.6, 523.6, true); // a sixth injected sample: not paired
+    const Dataset five = eq2_dataset(truth, 5);
+    Dataset d;
+    for (std::size_t k = 0; k < five.size(); ++k) {
+        if (k == 5) // a sixth injected sample, first of its state: not paired
+            d.push_back(-1.0, 100.0, 100.0, -2.0, 8.6, 523.6, true);
+        d.push_back(five.t[k], five.ud[k], five.uq[k], five.id[k], five.iq[k], five.omega[k],
+                    five.injected[k]);
+    }
+    // Rows 6-10 are the five injected samples of eq2_dataset; residuals on rows 0, 1, 6 and 10.
     d.ud[0] += 0.1;
     d.uq[1] -= 0.2;
-    d.ud[5] += 0.3;
-    d.uq[9] += 0.4;
+    d.ud[6] += 0.3;
+    d.uq[10] += 0.4;
     const FitnessWeights w{0.1, 0.2, 0.3, 0.4};
     const SteadyStateData s = pair_samples(d, w);
     EXPECT_EQ(s.pairs, 5);
-    // r = 0.1 at row 0 (w1), -0.2 at row 1 (w2), 0.3 at row 5 (w3), 0.4 at row 9 (w4).
+    // r = 0.1 at row 0 (w1), -0.2 at row 1 (w2), 0.3 at row 6 (w3), 0.4 at row 10 (w4).
     const double expected = 0.1 * 0.01 + 0.2 * 0.04 + 0.3 * 0.09 + 0.4 * 0.16;
     EXPECT_NEAR(s.fitness(truth), expected, 1e-14);
 }
@@ -146,6 +155,25 @@ TEST(PmsmLeastSquares, ReproducesExpectedCsvOnTheCleanFile) {
     for (int j = 0; j < 4; ++j)
         EXPECT_NEAR(r.theta[j] / e.theta_ls[j], 1.0, 1e-9) << "parameter " << j;
     EXPECT_NEAR(r.f / e.f_ls, 1.0, 1e-6);
+}
+
+// The interior-PM motor (Ld != Lq) of the shared data: eq. 11 by the `pmsm` problem on its
+// settled plateaus, against the independent solver's optimum, and (clean file) the truth.
+TEST(PmsmLeastSquares, ReproducesExpectedCsvForTheInteriorPmMotor) {
+    for (const std::string file :
+         {"pmsm_public_ipm_1800rpm_4Nm_clean_ss.csv", "pmsm_public_ipm_1800rpm_4Nm_noisy_ss.csv"}) {
+        const Expected e = read_expected(file);
+        const auto problem = builtin_problems().create("pmsm:data=" + data_dir + file);
+        const auto optimum = problem->known_optimum();
+        ASSERT_TRUE(optimum && optimum->x);
+        for (int j = 0; j < 4; ++j)
+            EXPECT_NEAR((*optimum->x)[j] / e.theta_ls[j], 1.0, 1e-9) << file << " parameter " << j;
+        if (file.find("clean") != std::string::npos)
+            EXPECT_LT(((*optimum->x - Eigen::VectorXd(e.truth)).array() / e.truth.array()).abs().maxCoeff(),
+                      1e-5);
+        else
+            EXPECT_NEAR(optimum->f / e.f_ls, 1.0, 1e-9) << file;
+    }
 }
 
 // The optimum is a minimum: f rises in every direction (a convexity check that can fail if the

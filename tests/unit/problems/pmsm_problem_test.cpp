@@ -79,7 +79,7 @@ TEST(PmsmProblem, RejectsBadParameters) {
     EXPECT_EQ(error_of("pmsm:n=501"), "pmsm: parameter 'n' = 501 is outside [2, 500]");
     EXPECT_EQ(error_of("pmsm:noise_i=-1"), "pmsm: parameter 'noise_i' = -1 is outside [0, 10]");
     EXPECT_EQ(error_of("pmsm:data=x.csv,speed=2000,seed=3"),
-              "pmsm: 'data' reads a dataset; the simulator parameters (speed, seed) cannot be given with it");
+              "pmsm: 'data' reads datasets; the simulator parameters (speed, seed) cannot be given with it");
     EXPECT_THROW((void)builtin_problems().create("pmsm:data=/nonexistent.csv"), std::runtime_error);
 }
 
