@@ -14,7 +14,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "algorithms/sampling.hpp"
 #include "problems/objective.hpp"
@@ -33,15 +35,17 @@ inline LearningFactor learning_factor_from(const std::string& text) {
 class Classroom {
 public:
     // Draws `np` learners uniformly in the box (eq. 5: learner by learner, coordinate by
-    // coordinate) and evaluates each as it is drawn: np evaluations.
+    // coordinate), then evaluates them in index order as one batch: np evaluations. No draw
+    // depends on an f, so this is drawing and evaluating one learner at a time, bit for bit.
     Classroom(Objective& objective, Rng& rng, Eigen::Index np)
         : x_(objective.dimension(), np), f_(np), sum_(objective.dimension()),
           inverse_size_(1.0 / static_cast<double>(np)) {
-        for (Eigen::Index i = 0; i < np; ++i) {
-            Eigen::VectorXd learner = uniform_point(objective.bounds(), rng);
-            f_[i] = objective.evaluate(learner);
-            x_.col(i) = learner;
-        }
+        std::vector<Eigen::VectorXd> learners(static_cast<std::size_t>(np));
+        for (auto& learner : learners)
+            learner = uniform_point(objective.bounds(), rng);
+        objective.evaluate_batch(learners, std::span<double>(f_.data(), learners.size()));
+        for (Eigen::Index i = 0; i < np; ++i)
+            x_.col(i) = learners[static_cast<std::size_t>(i)];
         resum();
         find_teacher();
     }

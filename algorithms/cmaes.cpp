@@ -15,7 +15,8 @@
 // Restart criteria (Hansen's tutorial, appendix B.3, and pycma's defaults): TolFun 1e-12 on the
 // range of the current and the last 10 + ceil(30 D / lambda) generations' best f, TolX 1e-12 * sigma0,
 // condition number of C above 1e14, no effect of an axis or of a coordinate, a non-finite sigma.
-// Evaluations: lambda per iteration (the first generation is iteration 0).
+// Evaluations: lambda per iteration (the first generation is iteration 0); a generation's offspring
+// are evaluated as one batch (Objective::evaluate_batch).
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -92,10 +93,13 @@ private:
         std::vector<int> order(static_cast<std::size_t>(lambda));
         std::deque<double> best_history;
         const auto history_length = static_cast<std::size_t>(10 + std::ceil(30.0 * dn / lambda));
-        Eigen::VectorXd z(n), x(n);
+        Eigen::VectorXd z(n);
+        std::vector<Eigen::VectorXd> x(static_cast<std::size_t>(lambda), Eigen::VectorXd::Zero(n));
         long long generation = 0;
 
         while (!objective.exhausted()) {
+            // The lambda offspring are sampled first and evaluated as one batch (in parallel for
+            // an expensive problem): no sample depends on an f of its generation.
             for (int j = 0; j < lambda; ++j) {
                 Eigen::VectorXd yn(n);
                 for (int attempt = 0; attempt < 10; ++attempt) {
@@ -105,9 +109,11 @@ private:
                     if ((yn.array() >= 0.0).all() && (yn.array() <= 1.0).all())
                         break;
                 }
-                x = box.lower + (yn.array() * width).matrix();
-                f[static_cast<std::size_t>(j)] = objective.evaluate(x); // clamps x if still outside
-                y.col(j) = ((x - box.lower).array() / width).matrix() - m;
+                x[static_cast<std::size_t>(j)] = box.lower + (yn.array() * width).matrix();
+            }
+            objective.evaluate_batch(x, f); // clamps the samples still outside
+            for (int j = 0; j < lambda; ++j) {
+                y.col(j) = ((x[static_cast<std::size_t>(j)] - box.lower).array() / width).matrix() - m;
                 y.col(j) /= sigma;
             }
             if (first) {

@@ -9,7 +9,8 @@
 // Defaults (Storn and Price 1997, section 3): NP = 10 D, F = 0.5, CR = 0.9 (their advice for a
 // first try: F = 0.5, CR = 0.1 or 0.9; 0.9 since rotated problems need it).
 // Bounds: out-of-box trials are clamped by the Objective (BoundPolicy::clamp).
-// Evaluations: NP to initialise, then NP per iteration (one trial per member).
+// Evaluations: NP to initialise, then NP per iteration (one trial per member), each a batch
+// (Objective::evaluate_batch).
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -35,9 +36,14 @@ public:
 
         std::vector<Eigen::VectorXd> next = x;
         std::vector<double> f_next = fx;
-        Eigen::VectorXd trial(d);
+        std::vector<Eigen::VectorXd> trials(np, Eigen::VectorXd::Zero(d));
+        std::vector<double> f_trials(np);
         while (!objective.exhausted()) {
+            // Every trial first (they depend on the old generation only), then one batch of
+            // evaluations, then the selections: the draws, points and evaluations of the
+            // one-trial-at-a-time loop, in the same order.
             for (std::size_t i = 0; i < np; ++i) {
+                Eigen::VectorXd& trial = trials[i];
                 std::size_t r1 = 0, r2 = 0, r3 = 0;
                 do {
                     r1 = rng.below(np);
@@ -52,10 +58,12 @@ public:
                 for (Eigen::Index k = 0; k < d; ++k)
                     trial[k] = (rng.uniform() < cr_ || k == k_rand) ? x[r1][k] + f_ * (x[r2][k] - x[r3][k])
                                                                     : x[i][k];
-                const double f_trial = objective.evaluate(trial);
-                if (f_trial <= fx[i]) {
-                    next[i] = trial;
-                    f_next[i] = f_trial;
+            }
+            objective.evaluate_batch(trials, f_trials);
+            for (std::size_t i = 0; i < np; ++i) {
+                if (f_trials[i] <= fx[i]) {
+                    next[i].swap(trials[i]); // the trial buffer is rewritten next generation
+                    f_next[i] = f_trials[i];
                 } else {
                     next[i] = x[i];
                     f_next[i] = fx[i];

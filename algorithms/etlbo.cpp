@@ -46,6 +46,8 @@ public:
         std::vector<Eigen::VectorXd> elite_x(n_elite);
         std::vector<double> elite_f(n_elite);
         Eigen::VectorXd candidate(d);
+        std::vector<Eigen::VectorXd> candidates(np, Eigen::VectorXd::Zero(d));
+        std::vector<double> f(np);
         while (!objective.exhausted()) {
             order = pop.ranking();
             for (std::size_t e = 0; e < n_elite; ++e) {
@@ -53,7 +55,9 @@ public:
                 elite_f[e] = fx[order[e]];
             }
 
-            // Teacher phase.
+            // Teacher phase. The teacher and the mean are fixed for the phase and learner i's
+            // move reads only x_i, so all moves are made first and evaluated as one batch (in
+            // parallel for an expensive problem): the in-place loop, bit for bit.
             const Eigen::VectorXd teacher = x[order[0]];
             Eigen::VectorXd mean = Eigen::VectorXd::Zero(d);
             for (const auto& xi : x)
@@ -62,11 +66,17 @@ public:
             for (std::size_t i = 0; i < np; ++i) {
                 const double tf = std::round(1.0 + rng.uniform());
                 for (Eigen::Index k = 0; k < d; ++k)
-                    candidate[k] = x[i][k] + rng.uniform() * (teacher[k] - tf * mean[k]);
-                accept_if_better(objective, candidate, x[i], fx[i]);
+                    candidates[i][k] = x[i][k] + rng.uniform() * (teacher[k] - tf * mean[k]);
+            }
+            objective.evaluate_batch(candidates, f);
+            for (std::size_t i = 0; i < np; ++i) {
+                if (f[i] < fx[i]) {
+                    x[i].swap(candidates[i]); // the candidate buffer is rewritten next time
+                    fx[i] = f[i];
+                }
             }
 
-            // Learner phase.
+            // Learner phase: one at a time, since partner j may have just moved.
             for (std::size_t i = 0; i < np; ++i) {
                 const auto j = static_cast<std::size_t>(rng.below_except(np, i));
                 const bool i_better = fx[i] < fx[j];
@@ -85,7 +95,8 @@ public:
                 fx[worst] = elite_f[e];
             }
 
-            // Duplicate removal by mutation of one random coordinate.
+            // Duplicate removal by mutation of one random coordinate (rare; one at a time, since
+            // the evaluation repairs x_i in place before later learners are compared with it).
             for (std::size_t i = 1; i < np; ++i) {
                 for (std::size_t j = 0; j < i; ++j) {
                     if (x[i] != x[j])

@@ -67,6 +67,7 @@
 // 2.2.3, "found best after many trials"), unconditional replacement with static bounds.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/classroom.hpp"
@@ -100,6 +101,9 @@ public:
         Eigen::VectorXd trial(d);
         Eigen::VectorXd lo = objective.bounds().lower;
         Eigen::VectorXd hi = objective.bounds().upper;
+        std::vector<Eigen::Index> mutated;
+        std::vector<Eigen::VectorXd> opposites;
+        std::vector<double> f_opposites;
         while (!objective.exhausted()) {
             c.resum();
             teaching(c, objective, rng, trial);
@@ -108,7 +112,7 @@ public:
             else
                 detail::learner_phase(c, objective, rng, trial, s_.r_mode);
             if (s_.obl)
-                opposition_mutation(c, objective, mutation_rng, trial, lo, hi);
+                opposition_mutation(c, objective, mutation_rng, lo, hi, mutated, opposites, f_opposites);
             objective.end_iteration();
         }
     }
@@ -175,20 +179,30 @@ private:
     }
 
     // Eq. 10: X_i <- lo + hi - X_i with probability p, for each learner in index order.
+    // The opposite of learner i depends on X_i and on bounds fixed for the step, never on another
+    // learner's replacement, and the coin flips come from their own stream: so every flip and
+    // opposite is made first, the opposites are evaluated as one batch (in parallel for an
+    // expensive problem) and the replacements follow in index order, as in the one-by-one loop.
+    // `mutated`, `opposites` and `f` are buffers kept across iterations.
     void opposition_mutation(detail::Classroom& c, Objective& objective, Rng& mutation_rng,
-                             Eigen::VectorXd& trial, Eigen::VectorXd& lo, Eigen::VectorXd& hi) const {
+                             Eigen::VectorXd& lo, Eigen::VectorXd& hi, std::vector<Eigen::Index>& mutated,
+                             std::vector<Eigen::VectorXd>& opposites, std::vector<double>& f) const {
         if (s_.obl_population_bounds) {
             lo = c.positions().rowwise().minCoeff();
             hi = c.positions().rowwise().maxCoeff();
         }
-        for (Eigen::Index i = 0; i < c.size(); ++i) {
-            if (!(mutation_rng.uniform() < s_.p))
-                continue;
-            trial = lo + hi - c.learner(i);
-            const double f = objective.evaluate(trial);
-            if (!s_.obl_greedy || f < c.fitness(i))
-                c.replace(i, trial, f);
-        }
+        mutated.clear();
+        for (Eigen::Index i = 0; i < c.size(); ++i)
+            if (mutation_rng.uniform() < s_.p)
+                mutated.push_back(i);
+        opposites.resize(mutated.size());
+        f.resize(mutated.size());
+        for (std::size_t m = 0; m < mutated.size(); ++m)
+            opposites[m] = lo + hi - c.learner(mutated[m]);
+        objective.evaluate_batch(opposites, f);
+        for (std::size_t m = 0; m < mutated.size(); ++m)
+            if (!s_.obl_greedy || f[m] < c.fitness(mutated[m]))
+                c.replace(mutated[m], opposites[m], f[m]);
     }
 
     ItlboSettings s_;

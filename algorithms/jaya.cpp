@@ -31,22 +31,28 @@ public:
         auto [x, fx] = random_population(objective, rng, np);
         objective.initialised();
 
-        Eigen::VectorXd candidate(d);
+        std::vector<Eigen::VectorXd> candidates(np, Eigen::VectorXd::Zero(d));
+        std::vector<double> f(np);
         while (!objective.exhausted()) {
             const auto [lo, hi] = std::minmax_element(fx.begin(), fx.end());
             const Eigen::VectorXd best = x[static_cast<std::size_t>(lo - fx.begin())];
             const Eigen::VectorXd worst = x[static_cast<std::size_t>(hi - fx.begin())];
+            // Member i's move reads only x_i and the best and worst of the iteration's start, never
+            // another member's update: all moves first, then one batch of evaluations, then the
+            // greedy replacements, is the in-place loop bit for bit.
             for (std::size_t i = 0; i < np; ++i) {
                 for (Eigen::Index k = 0; k < d; ++k) {
                     const double r1 = rng.uniform();
                     const double r2 = rng.uniform();
                     const double a = std::abs(x[i][k]);
-                    candidate[k] = x[i][k] + r1 * (best[k] - a) - r2 * (worst[k] - a);
+                    candidates[i][k] = x[i][k] + r1 * (best[k] - a) - r2 * (worst[k] - a);
                 }
-                const double f = objective.evaluate(candidate);
-                if (f < fx[i]) {
-                    x[i] = candidate;
-                    fx[i] = f;
+            }
+            objective.evaluate_batch(candidates, f);
+            for (std::size_t i = 0; i < np; ++i) {
+                if (f[i] < fx[i]) {
+                    x[i].swap(candidates[i]); // the candidate buffer is rewritten next time
+                    fx[i] = f[i];
                 }
             }
             objective.end_iteration();

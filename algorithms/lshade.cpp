@@ -125,9 +125,11 @@ public:
                         value = 0.5 * (box.upper[k] + x[i][k]);
                     u[k] = value;
                 }
-                f_trials[i] = objective.evaluate(u);
                 trials[i] = std::move(u);
             }
+            // Every trial is built from the generation as it began, so they are evaluated as one
+            // batch (in parallel for an expensive problem), in index order, before any selection.
+            objective.evaluate_batch(trials, f_trials);
 
             // Selection, archive and the successful parameters.
             s_cr.clear();

@@ -29,13 +29,15 @@ struct Population {
     }
 };
 
-// `size` points uniform in the box, evaluated in index order (costs `size` evaluations).
+// `size` points uniform in the box, evaluated in index order (costs `size` evaluations). All are
+// drawn first, then evaluated as one batch (in parallel for an expensive problem): no draw depends
+// on an f, so the points, the draws and the Objective's calls are those of drawing and evaluating
+// one at a time (only draws past the end of the budget differ, and the run ends there anyway).
 inline Population random_population(Objective& objective, Rng& rng, std::size_t size) {
     Population p{std::vector<Eigen::VectorXd>(size), std::vector<double>(size)};
-    for (std::size_t i = 0; i < size; ++i) {
+    for (std::size_t i = 0; i < size; ++i)
         p.x[i] = uniform_point(objective.bounds(), rng);
-        p.f[i] = objective.evaluate(p.x[i]);
-    }
+    objective.evaluate_batch(p.x, p.f);
     return p;
 }
 

@@ -39,6 +39,8 @@
 // Random draws, in order: initial positions (particle by particle, coordinate by coordinate);
 // per particle move, r1 then r2 for each coordinate (coordinate), or r1 then r2 once (learner).
 #include <algorithm>
+#include <span>
+#include <vector>
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/sampling.hpp"
@@ -68,12 +70,17 @@ public:
         Eigen::MatrixXd v = Eigen::MatrixXd::Zero(d, s_.np);
         Eigen::MatrixXd pbest(d, s_.np);
         Eigen::VectorXd pbest_f(s_.np);
-        Eigen::VectorXd point(d);
-        for (Eigen::Index i = 0; i < s_.np; ++i) {
+        // Particles are independent within an iteration (gbest is synchronous, below), so each
+        // iteration's NP positions are computed first and evaluated as one batch (in parallel for
+        // an expensive problem) in particle order: the same draws and evaluations as one by one.
+        const auto np = static_cast<std::size_t>(s_.np);
+        std::vector<Eigen::VectorXd> points(np);
+        std::vector<double> f(np);
+        for (auto& point : points)
             point = uniform_point(box, rng);
-            pbest_f[i] = objective.evaluate(point);
-            x.col(i) = point;
-        }
+        objective.evaluate_batch(points, std::span<double>(pbest_f.data(), np));
+        for (Eigen::Index i = 0; i < s_.np; ++i)
+            x.col(i) = points[static_cast<std::size_t>(i)];
         pbest = x;
         objective.initialised();
 
@@ -88,6 +95,7 @@ public:
                     r1 = rng.uniform();
                     r2 = rng.uniform();
                 }
+                Eigen::VectorXd& point = points[static_cast<std::size_t>(i)];
                 for (Eigen::Index k = 0; k < d; ++k) {
                     if (!s_.per_particle_r) {
                         r1 = rng.uniform();
@@ -100,11 +108,14 @@ public:
                     v(k, i) = vk;
                     point[k] = x(k, i) + vk;
                 }
-                const double f = objective.evaluate(point); // clamps `point` to the box
-                x.col(i) = point;
-                if (f < pbest_f[i]) {
-                    pbest_f[i] = f;
-                    pbest.col(i) = point;
+            }
+            objective.evaluate_batch(points, f); // clamps each point to the box
+            for (Eigen::Index i = 0; i < s_.np; ++i) {
+                const auto j = static_cast<std::size_t>(i);
+                x.col(i) = points[j];
+                if (f[j] < pbest_f[i]) {
+                    pbest_f[i] = f[j];
+                    pbest.col(i) = points[j];
                 }
             }
             gbest = pbest.col(best_index(pbest_f));

@@ -7,6 +7,10 @@
 // Parameters: batch = evaluations per iteration (default 50, the paper's population size, so
 // that at equal iterations random search spends what PSO spends).
 // Evaluations: batch for the initialisation (iteration 0), then batch per iteration.
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/sampling.hpp"
 
@@ -20,20 +24,35 @@ public:
     std::string name() const override { return "random-search"; }
 
     void run(Objective& objective, Rng& rng) const override {
-        sample_batch(objective, rng);
+        std::vector<Eigen::VectorXd> points;
+        std::vector<double> f;
+        sample_batch(objective, rng, points, f);
         objective.initialised();
         while (!objective.exhausted()) {
-            sample_batch(objective, rng);
+            sample_batch(objective, rng, points, f);
             objective.end_iteration();
         }
     }
 
 private:
-    // The Objective keeps the best point, so a sample needs nothing else done with it.
-    void sample_batch(Objective& objective, Rng& rng) const {
-        for (long long i = 0; i < batch_; ++i) {
-            Eigen::VectorXd x = uniform_point(objective.bounds(), rng);
-            objective.evaluate(x);
+    // Points evaluated per call of evaluate_batch at most: bounds the memory of a large `batch`.
+    static constexpr long long chunk_ = 256;
+
+    // The Objective keeps the best point, so a sample needs nothing else done with it. Samples are
+    // drawn and evaluated in chunks (in parallel for an expensive problem), never more than the
+    // budget has room for, or one when it has none (whose evaluation ends the run): so the draws
+    // are those of sampling one point at a time (unless a target ends the run inside a chunk).
+    void sample_batch(Objective& objective, Rng& rng, std::vector<Eigen::VectorXd>& points,
+                      std::vector<double>& f) const {
+        for (long long left = batch_; left > 0;) {
+            const long long room = std::max<std::int64_t>(1, objective.remaining_evaluations());
+            const auto n = static_cast<std::size_t>(std::min({left, chunk_, room}));
+            points.resize(n);
+            f.resize(n);
+            for (auto& x : points)
+                x = uniform_point(objective.bounds(), rng);
+            objective.evaluate_batch(points, f);
+            left -= static_cast<long long>(n);
         }
     }
 

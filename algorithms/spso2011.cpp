@@ -41,14 +41,17 @@ public:
         const auto s = static_cast<std::size_t>(swarm_);
         std::vector<Eigen::VectorXd> x(s), v(s), p(s);
         std::vector<double> fp(s);
+        // The initial swarm is drawn first and evaluated as one batch (in parallel for an
+        // expensive problem): no draw depends on an f. The moves below are asynchronous (each
+        // particle sees the bests its informants have just found), so they are evaluated one by one.
         for (std::size_t i = 0; i < s; ++i) {
             x[i] = uniform_point(box, rng);
             v[i].resize(d);
             for (Eigen::Index k = 0; k < d; ++k)
                 v[i][k] = rng.uniform(box.lower[k] - x[i][k], box.upper[k] - x[i][k]);
-            fp[i] = objective.evaluate(x[i]);
-            p[i] = x[i];
         }
+        objective.evaluate_batch(x, fp);
+        p = x;
         objective.initialised();
 
         // informed_by[i][j]: particle j informs particle i.

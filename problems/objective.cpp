@@ -1,6 +1,12 @@
 #include "problems/objective.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <exception>
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/partitioner.h>
+#include <oneapi/tbb/task_arena.h>
 #include <stdexcept>
 #include <string>
 
@@ -61,6 +67,18 @@ std::string point_text(const Eigen::VectorXd& x) {
     return out + ")";
 }
 
+// The errors of evaluate(), built out of its way: it is in every optimiser's inner loop.
+[[noreturn, gnu::cold]] void throw_wrong_size(const Problem& problem, Eigen::Index size) {
+    throw std::logic_error("objective: point of dimension " + std::to_string(size) + " given to '" +
+                           problem.name() + "' of dimension " + std::to_string(problem.dimension()));
+}
+
+[[noreturn, gnu::cold]] void throw_bad_value(const Problem& problem, double f, std::int64_t evaluation,
+                                             const Eigen::VectorXd& x) {
+    throw std::runtime_error("problem '" + problem.name() + "' returned " + (std::isnan(f) ? "NaN" : "-inf") +
+                             " at evaluation " + std::to_string(evaluation) + ", x = " + point_text(x));
+}
+
 } // namespace
 
 Objective::Objective(const Problem& problem, Budget budget, BoundPolicy policy, ObjectiveOptions options)
@@ -103,20 +121,18 @@ void Objective::repair(Eigen::VectorXd& x) const {
     }
 }
 
-double Objective::evaluate(Eigen::VectorXd& x) {
+void Objective::check_before_evaluation(const Eigen::VectorXd& x) const {
     if (x.size() != problem_.dimension())
-        throw std::logic_error("objective: point of dimension " + std::to_string(x.size()) + " given to '" +
-                               problem_.name() + "' of dimension " + std::to_string(problem_.dimension()));
+        throw_wrong_size(problem_, x.size());
     if (exhausted())
         throw BudgetExhausted{};
-    repair(x);
-    const double f = problem_.evaluate(x);
+}
+
+double Objective::account(const Eigen::VectorXd& x, double f) {
     // +inf is a legal value, the worst there is. NaN is never one; nor is -inf below a finite
     // known minimum. Either fails the run, naming the evaluation and the point.
     if (std::isnan(f) || (f == -std::numeric_limits<double>::infinity() && f_opt_ && std::isfinite(*f_opt_)))
-        throw std::runtime_error("problem '" + problem_.name() + "' returned " +
-                                 (std::isnan(f) ? "NaN" : "-inf") + " at evaluation " +
-                                 std::to_string(evaluations_ + 1) + ", x = " + point_text(x));
+        throw_bad_value(problem_, f, evaluations_ + 1, x);
     ++evaluations_;
     if (f < best_f_ || best_x_.size() == 0) {
         best_f_ = f;
@@ -130,6 +146,68 @@ double Objective::evaluate(Eigen::VectorXd& x) {
         next_checkpoint_ = next_checkpoint(evaluations_);
     }
     return f;
+}
+
+double Objective::evaluate(Eigen::VectorXd& x) {
+    check_before_evaluation(x);
+    repair(x);
+    return account(x, problem_.evaluate(x));
+}
+
+void Objective::evaluate_batch(std::span<Eigen::VectorXd> x, std::span<double> f) {
+    if (f.size() != x.size())
+        throw std::logic_error("objective: a batch of " + std::to_string(x.size()) + " points given " +
+                               std::to_string(f.size()) + " places for their values");
+    // The points evaluate() would reach: within the budget, and before the first of a wrong size.
+    // Only these are computed ahead; a target reached or an error on the way may still stop the
+    // bookkeeping earlier, and then some values computed are dropped (never counted).
+    std::size_t ahead = 0;
+    if (problem_.parallel_evaluation() && x.size() > 1 && !exhausted()) {
+        const auto room =
+            static_cast<std::size_t>(std::min(remaining_evaluations(), static_cast<std::int64_t>(x.size())));
+        while (ahead < room && x[ahead].size() == problem_.dimension())
+            ++ahead;
+    }
+    if (ahead < 2) {
+        for (std::size_t i = 0; i < x.size(); ++i)
+            f[i] = evaluate(x[i]);
+        return;
+    }
+
+    // Repaired copies, so that a point the bookkeeping never reaches is left as it was given.
+    // An exception of the problem is kept and rethrown at its index, as evaluate() would.
+    std::vector<Eigen::VectorXd> repaired(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(ahead));
+    std::vector<double> values(ahead);
+    std::vector<std::exception_ptr> errors(ahead);
+    // Isolated: a thread waiting here helps with these points only, and never starts another
+    // task of the caller's (another run of the study) in the middle of this one's iteration.
+    tbb::this_task_arena::isolate([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, ahead, 1),
+            [&](const tbb::blocked_range<std::size_t>& range) {
+                for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                    try {
+                        repair(repaired[i]);
+                        values[i] = problem_.evaluate(repaired[i]);
+                    } catch (...) {
+                        errors[i] = std::current_exception();
+                    }
+                }
+            },
+            tbb::simple_partitioner());
+    });
+
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        if (i >= ahead) {
+            f[i] = evaluate(x[i]); // throws: the budget is spent, or x[i] has a wrong size
+            continue;
+        }
+        check_before_evaluation(x[i]);
+        x[i] = repaired[i];
+        if (errors[i])
+            std::rethrow_exception(errors[i]);
+        f[i] = account(x[i], values[i]);
+    }
 }
 
 void Objective::initialised() {

@@ -11,12 +11,19 @@
 // the middle of an iteration past the budget unwinds cleanly to run_to_budget() (see
 // algorithms/optimizer.hpp). This makes every optimiser's count exact without a check after
 // every evaluation in every inner loop.
+//
+// Parallel evaluation (evaluate_batch): a population whose points do not depend on each other's
+// f can be handed over at once. The problem's values are then computed in parallel when the
+// problem says one evaluation is expensive (Problem::parallel_evaluation), and all the
+// bookkeeping above is done afterwards, in index order, so that the result is that of the same
+// evaluate() calls one after another, bit for bit, whatever the number of threads.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "problems/problem.hpp"
@@ -82,6 +89,16 @@ public:
     double evaluate(Eigen::VectorXd& x);
     void repair(Eigen::VectorXd& x) const;
 
+    // f[i] = evaluate(x[i]) for i = 0, 1, ... in index order, with every effect of those calls and
+    // nothing else: the same repairs in place, counts, best-so-far, checkpoints and target, and
+    // the same exception at the same index (BudgetExhausted, a wrong size, NaN or -inf, or one
+    // the problem throws), after which the remaining x are left as given and their f unset.
+    // When problem.parallel_evaluation() is true and more than one point fits in the budget,
+    // the values of those points (never more: an evaluation may cost a simulation) are computed
+    // in parallel with oneTBB; otherwise this is the plain loop. Throws std::logic_error unless
+    // f.size() == x.size().
+    void evaluate_batch(std::span<Eigen::VectorXd> x, std::span<double> f);
+
     // Call once after the initial population is evaluated (records iteration 0), and at the end
     // of every iteration (counts it against max_iterations and records it).
     void initialised();
@@ -105,6 +122,10 @@ public:
     void finish();
 
 private:
+    // The checks evaluate() makes before it evaluates (a wrong size, a spent budget), and the
+    // bookkeeping it does once f is known; evaluate_batch() runs the two around parallel values.
+    void check_before_evaluation(const Eigen::VectorXd& x) const;
+    double account(const Eigen::VectorXd& x, double f);
     void record_iteration();
 
     const Problem& problem_;

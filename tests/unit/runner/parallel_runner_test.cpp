@@ -90,6 +90,30 @@ TEST(ParallelRunner, OutputIsByteIdenticalForOneAndTwoThreads) {
         EXPECT_EQ(read_text(one / name), read_text(two / name)) << name;
 }
 
+// A problem whose evaluation is a simulation (the output-error PMSM model) has each run's
+// populations evaluated in parallel inside the run when threads are idle (nested oneTBB): with
+// one run of each population optimiser and two threads that is what happens, and the records are
+// still those of one thread, byte for byte.
+TEST(ParallelRunner, NestedPopulationEvaluationGivesTheRecordsOfOneThread) {
+    Study s;
+    s.algorithms = {"cmaes", "lshade", "pso", "itlbo"};
+    s.problems = {"pmsm:model=output,motor=ipm,speed=1800,load=4,n=40,noise_i=0.02"};
+    s.runs = 1;
+    s.seed = 3;
+    s.budgets.front().max_evaluations = 600;
+    const PreparedStudy study = prepare_study(s);
+    ASSERT_TRUE(study.problems.front()->parallel_evaluation());
+    const fs::path one = fresh_dir("nested1");
+    const fs::path two = fresh_dir("nested2");
+    RunnerOptions options;
+    options.threads = 1;
+    run_into(one, study, options);
+    options.threads = 2;
+    run_into(two, study, options);
+    for (const char* name : deterministic_files)
+        EXPECT_EQ(read_text(one / name), read_text(two / name)) << name;
+}
+
 TEST(ParallelRunner, CancelledAfterKRunsThenResumedMatchesAnUninterruptedStudy) {
     const PreparedStudy study = make_study();
     const fs::path reference = fresh_dir("reference");
