@@ -238,6 +238,20 @@ int run_identify_command(const std::vector<std::string>& args) {
 
     const pmsm::PmsmSources data = pmsm::read_sources(o.data, read_options);
 
+    // The same data as a `pmsm` problem of `mhbench run`: its search box and its warnings.
+    std::string problem_spec = "pmsm:model=" + o.model + ",data=" + o.data + ",id_threshold=" + o.threshold;
+    if (kind == pmsm::ModelKind::steady) {
+        problem_spec += ",settle=" + o.settle;
+        const char* keys[] = {"w1", "w2", "w3", "w4"};
+        const double values[] = {weights.w1, weights.w2, weights.w3, weights.w4};
+        for (int j = 0; j < 4; ++j)
+            problem_spec += std::string(",") + keys[j] + "=" + format_real(values[j]);
+    } else {
+        problem_spec += ",fit_vdt=" + std::string(o.fit_vdt ? "on" : "off");
+        problem_spec += kind == pmsm::ModelKind::dynamic ? ",smooth=" + std::to_string(smoothing)
+                                                         : ",substeps=" + std::to_string(substeps);
+    }
+
     // The linear model whose fit gives estimates, standard errors and verdicts.
     pmsm::LinearModel model;
     double volts_per_unit = 2.0; // the dynamic model's rows carry weight 0.25: half a volt per volt
@@ -254,11 +268,7 @@ int run_identify_command(const std::vector<std::string>& args) {
             model = pmsm::dynamic_model(data.datasets, data.names, dynamic);
             title = "dynamic model (discrete dq voltage equations with di/dt), exact least squares";
         } else {
-            std::string spec = "pmsm:model=output,data=" + o.data + ",substeps=" + std::to_string(substeps) +
-                               ",id_threshold=" + o.threshold;
-            if (o.fit_vdt)
-                spec += ",fit_vdt=on";
-            const auto problem = builtin_problems().create(Spec::parse(spec));
+            const auto problem = builtin_problems().create(Spec::parse(problem_spec));
             const auto& output_problem = dynamic_cast<const pmsm::OutputErrorProblem&>(*problem);
             output = identify_output_error(output_problem, o.output);
             model = output->linearised;
@@ -372,6 +382,12 @@ int run_identify_command(const std::vector<std::string>& args) {
     if (output)
         out << "The spread over seeds measures how reliably the optimiser finds the estimate, not the data's "
                "noise.\n";
+    // Data that the linear models cannot determine make no `pmsm` problem: nothing to say then.
+    try {
+        for (const std::string& warning : builtin_problems().create(Spec::parse(problem_spec))->warnings())
+            out << "note: as a problem of mhbench run (" << problem_spec << "): " << warning << '\n';
+    } catch (const std::exception&) {
+    }
     for (Eigen::Index j = 0; j < k; ++j)
         if (estimate[j] <= 0 && j < 4 && fit.determined[static_cast<std::size_t>(j)])
             out << "warning: " << model.parameter_names[static_cast<std::size_t>(j)]
