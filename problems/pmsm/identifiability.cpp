@@ -1,6 +1,5 @@
 #include "problems/pmsm/identifiability.hpp"
 
-#include <Eigen/SVD>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -75,16 +74,7 @@ Identifiability judge_identifiability(const LinearModel& model, const LinearFit&
     const Eigen::Index k = model.parameters();
     const Eigen::Index m = model.equations();
 
-    // The weakest direction of the design with unit-norm columns.
-    Eigen::MatrixXd scaled = model.A;
-    for (Eigen::Index j = 0; j < k; ++j) {
-        const double norm = scaled.col(j).norm();
-        if (norm > 0)
-            scaled.col(j) /= norm;
-    }
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeThinV);
-    const Eigen::VectorXd weakest = svd.matrixV().col(k - 1).cwiseAbs();
-
+    const Eigen::VectorXd& weakest = fit.weakest_direction;
     for (Eigen::Index j = 0; j < k; ++j) {
         ParameterJudgement p;
         p.name = model.parameter_names[static_cast<std::size_t>(j)];

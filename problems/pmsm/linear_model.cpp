@@ -181,6 +181,7 @@ LinearFit fit_linear_model(const LinearModel& model, const Box* box) {
     // A parameter is determined when the null space (the right singular vectors of the dropped
     // singular values) has no component along it: then e_j lies in A's row space and theta_j is
     // the same for every least-squares solution.
+    fit.weakest_direction = V.col(k - 1).cwiseAbs();
     fit.determined.assign(static_cast<std::size_t>(k), true);
     for (Eigen::Index j = 0; j < k; ++j)
         fit.determined[static_cast<std::size_t>(j)] = V.row(j).tail(k - r).norm() <= null_tolerance;

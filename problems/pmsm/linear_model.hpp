@@ -46,6 +46,9 @@ struct LinearFit {
     Eigen::VectorXd standard_error; // sqrt of the diagonal; +inf for undetermined ones, NaN if m <= k
     double sigma2 = 0.0;            // f / (m - k); NaN when m <= k
     std::vector<bool> determined;   // false where the parameter has a component in A's null space
+    // |components| of the weakest direction of A with unit-norm columns (its last right singular
+    // vector): the parameters that share it are the ones the data tell apart worst.
+    Eigen::VectorXd weakest_direction;
     ResidualStats residual_d, residual_q;
 
     bool inside_box = true;    // theta lies in the box (when one was given)
