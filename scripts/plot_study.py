@@ -9,7 +9,8 @@ final_values.csv, target_hits.csv, critical_difference.csv, effects.csv and effe
 named by their labels (the `label` column). A study with several budgets has one report folder per
 budget, listed in REPORT_DIR/budgets.csv: each is drawn into its own figures/ folder, and every
 title names its budget (budget.txt of the folder).
-  convergence_iteration_<problem>   mean best-so-far vs iteration, std band, log y (the paper's Fig. 5)
+  convergence_iteration_<problem>   median best-so-far vs iteration, IQR band, log y (the paper's Fig. 5
+                                    shows the mean; the quartiles stay meaningful on a log axis)
   convergence_evaluations_<problem> median best-so-far vs evaluations, IQR band, log-log
   parameter_<name>_<problem>        mean best-so-far parameter vs iteration, the true value as a
                                     line and the least-squares optimum dotted (the paper's Figs. 6-9)
@@ -308,16 +309,6 @@ def convergence_figure(problem, problem_rows, x_key, centre, low, high, band_lab
     save(fig, out_dir, name)
 
 
-def mean_std_band(rows, sign):
-    values = []
-    for row in rows:
-        m, s = number(row["mean"]), number(row["std"])
-        v = m + sign * s
-        # On a log axis a band below zero cannot be drawn: keep it at the mean's scale.
-        values.append(v if v > 0 or m <= 0 else m * 1e-3)
-    return values
-
-
 def main():
     if len(sys.argv) != 2:
         sys.exit("usage: plot_study.py REPORT_DIR")
@@ -356,10 +347,12 @@ def plot_report(report):
     remove_stale_temporaries(out_dir)
     budget = read_budget(report)
 
+    # Median and quartiles, not mean +/- std: order statistics are the same on a log axis, where a
+    # std band would have to be clipped at zero and a single bad run drags the mean by decades.
     FIGURES.attempt("convergence_iteration_*", lambda: convergence(
-        read_rows(os.path.join(report, "curves_iteration.csv")), "iteration", "mean",
-        lambda r: mean_std_band(r, -1), lambda r: mean_std_band(r, +1), "mean, band: +/- std", False, "iteration",
-        "convergence_iteration_", out_dir, budget))
+        read_rows(os.path.join(report, "curves_iteration.csv")), "iteration", "median",
+        lambda r: [number(x["q25"]) for x in r], lambda r: [number(x["q75"]) for x in r], "median, band: IQR", False,
+        "iteration", "convergence_iteration_", out_dir, budget))
     FIGURES.attempt("convergence_evaluations_*", lambda: convergence(
         read_rows(os.path.join(report, "curves_evaluations.csv")), "evaluations", "median",
         lambda r: [number(x["q25"]) for x in r], lambda r: [number(x["q75"]) for x in r], "median, band: IQR", True,
