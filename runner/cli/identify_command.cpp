@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -69,17 +70,6 @@ double positive_option(const std::string& text, const char* name) {
     if (!parse_real(text, v) || !(v > 0))
         throw std::invalid_argument(std::string("--") + name + " = " + value_excerpt(text) +
                                     " is not a number > 0");
-    return v;
-}
-
-long long integer_in(const std::string& text, const char* name, long long lo, long long hi) {
-    long long v = 0;
-    if (!parse_integer(text, v))
-        throw std::invalid_argument(std::string("--") + name + " = " + value_excerpt(text) + " " +
-                                    integer_refusal(text, lo, hi));
-    if (v < lo || v > hi)
-        throw std::invalid_argument(std::string("--") + name + " = " + value_excerpt(text) + " is outside [" +
-                                    std::to_string(lo) + ", " + std::to_string(hi) + "]");
     return v;
 }
 
@@ -228,11 +218,11 @@ int run_identify_command(const std::vector<std::string>& args) {
     double settle = 0;
     if (!parse_real(o.settle, settle) || settle < 0)
         throw std::invalid_argument("--settle = " + value_excerpt(o.settle) + " is not a number >= 0");
-    const int smoothing = static_cast<int>(integer_in(o.smooth, "smooth", 0, 50));
-    const int substeps = static_cast<int>(integer_in(o.substeps, "substeps", 1, 1000));
-    o.output.seeds = static_cast<int>(integer_in(o.seeds, "seeds", 1, 10000));
-    o.output.evaluations = integer_in(o.evaluations, "evaluations", 1, 1000000000000LL);
-    o.output.threads = static_cast<int>(integer_in(o.threads, "threads", 0, 4096));
+    const int smoothing = static_cast<int>(integer_argument(o.smooth, "smooth", 0, 50));
+    const int substeps = static_cast<int>(integer_argument(o.substeps, "substeps", 1, 1000));
+    o.output.seeds = static_cast<int>(integer_argument(o.seeds, "seeds", 1, 10000));
+    o.output.evaluations = integer_argument(o.evaluations, "evaluations", 1, 1000000000000LL);
+    o.output.threads = static_cast<int>(integer_argument(o.threads, "threads", 0, 4096));
     if (kind == pmsm::ModelKind::steady && (o.fit_vdt || vm["smooth"].defaulted() == false))
         throw std::invalid_argument("--fit-vdt and --smooth apply to --model dynamic or output");
 
@@ -252,6 +242,19 @@ int run_identify_command(const std::vector<std::string>& args) {
                                                          : ",substeps=" + std::to_string(substeps);
     }
 
+    // Made once: the output model optimises it, and every model reports its warnings. Data that
+    // the linear models cannot determine make no problem; identify still judges them.
+    std::unique_ptr<Problem> problem;
+    try {
+        problem = builtin_problems().create(Spec::parse(problem_spec));
+    } catch (const std::invalid_argument& e) {
+        if (kind == pmsm::ModelKind::output) // failed work (exit 1), as for the other models below
+            throw std::runtime_error(e.what());
+    } catch (const std::exception&) {
+        if (kind == pmsm::ModelKind::output)
+            throw;
+    }
+
     // The linear model whose fit gives estimates, standard errors and verdicts.
     pmsm::LinearModel model;
     double volts_per_unit = 2.0; // the dynamic model's rows carry weight 0.25: half a volt per volt
@@ -268,7 +271,6 @@ int run_identify_command(const std::vector<std::string>& args) {
             model = pmsm::dynamic_model(data.datasets, data.names, dynamic);
             title = "dynamic model (discrete dq voltage equations with di/dt), exact least squares";
         } else {
-            const auto problem = builtin_problems().create(Spec::parse(problem_spec));
             const auto& output_problem = dynamic_cast<const pmsm::OutputErrorProblem&>(*problem);
             output = identify_output_error(output_problem, o.output);
             model = output->linearised;
@@ -382,12 +384,9 @@ int run_identify_command(const std::vector<std::string>& args) {
     if (output)
         out << "The spread over seeds measures how reliably the optimiser finds the estimate, not the data's "
                "noise.\n";
-    // Data that the linear models cannot determine make no `pmsm` problem: nothing to say then.
-    try {
-        for (const std::string& warning : builtin_problems().create(Spec::parse(problem_spec))->warnings())
+    if (problem)
+        for (const std::string& warning : problem->warnings())
             out << "note: as a problem of mhbench run (" << problem_spec << "): " << warning << '\n';
-    } catch (const std::exception&) {
-    }
     for (Eigen::Index j = 0; j < k; ++j)
         if (estimate[j] <= 0 && j < 4 && fit.determined[static_cast<std::size_t>(j)])
             out << "warning: " << model.parameter_names[static_cast<std::size_t>(j)]

@@ -4,8 +4,12 @@
 
 #include <boost/program_options.hpp>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "problems/parameters.hpp"
+#include "problems/text_excerpt.hpp"
 
 namespace mhb::cli {
 
@@ -28,6 +32,19 @@ parse_command_line(const std::vector<std::string>& args,
     }
     po::notify(vm);
     return true;
+}
+
+// The integer option `--name` given as `text`, in [min, max]; otherwise std::invalid_argument in one
+// line that quotes the text and says what is allowed.
+inline long long integer_argument(const std::string& text, const char* name, long long min, long long max) {
+    long long v = 0;
+    if (!parse_integer(text, v))
+        throw std::invalid_argument(std::string("--") + name + " = " + value_excerpt(text) + " " +
+                                    integer_refusal(text, min, max));
+    if (v < min || v > max)
+        throw std::invalid_argument(std::string("--") + name + " = " + value_excerpt(text) + " is outside [" +
+                                    std::to_string(min) + ", " + std::to_string(max) + "]");
+    return v;
 }
 
 } // namespace mhb::cli

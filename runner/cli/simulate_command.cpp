@@ -35,15 +35,7 @@ double real_option(const po::variables_map& vm, const char* name) {
 }
 
 long long integer_option(const po::variables_map& vm, const char* name, long long min, long long max) {
-    const std::string& text = vm[name].as<std::string>();
-    long long v = 0;
-    if (!parse_integer(text, v))
-        throw std::invalid_argument(std::string("--") + name + " = " + value_excerpt(text) + " " +
-                                    integer_refusal(text, min, max));
-    if (v < min || v > max)
-        throw std::invalid_argument(std::string("--") + name + " = " + value_excerpt(text) + " is outside [" +
-                                    std::to_string(min) + ", " + std::to_string(max) + "]");
-    return v;
+    return integer_argument(vm[name].as<std::string>(), name, min, max);
 }
 
 } // namespace
