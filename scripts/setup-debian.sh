@@ -2,7 +2,8 @@
 # Installs the Debian packages mhbench needs, if any are missing (as root, or through sudo).
 # Every dependency comes from Debian: nothing is downloaded at build time.
 # Optional groups are named as arguments: `setup-debian.sh fuzz` adds clang and libFuzzer,
-# `setup-debian.sh mpi` Open MPI (the MHB_WITH_MPI build, scripts/mpi.sh).
+# `setup-debian.sh mpi` Open MPI (the MHB_WITH_MPI build, scripts/mpi.sh), `setup-debian.sh ccache`
+# the compiler cache CI shares between its release and MPI builds.
 set -euo pipefail
 
 packages=(
@@ -19,13 +20,15 @@ packages=(
 )
 optional_fuzz=(clang libclang-rt-dev)    # scripts/fuzz.sh: clang with libFuzzer and its sanitizers
 optional_mpi=(libopenmpi-dev openmpi-bin) # scripts/mpi.sh: Open MPI for `mpirun -np N mhbench run`
+optional_ccache=(ccache)                 # .ci/run: the MPI build reuses the release build's objects
 
 for group in "$@"; do
     case "$group" in
     fuzz) packages+=("${optional_fuzz[@]}") ;;
     mpi) packages+=("${optional_mpi[@]}") ;;
+    ccache) packages+=("${optional_ccache[@]}") ;;
     *)
-        echo "mhbench set-up: unknown optional group '$group' (known: fuzz, mpi)" >&2
+        echo "mhbench set-up: unknown optional group '$group' (known: fuzz, mpi, ccache)" >&2
         exit 2
         ;;
     esac
