@@ -40,20 +40,6 @@ const char* to_string(BoundPolicy policy) {
     return "?";
 }
 
-std::int64_t next_checkpoint(std::int64_t evaluations) {
-    if (evaluations < 1)
-        return 1;
-    // Start a little below the answer and walk up the grid.
-    auto k = static_cast<int>(std::floor(10.0 * std::log10(static_cast<double>(evaluations)))) - 1;
-    k = std::max(k, 0);
-    while (true) {
-        const std::int64_t g = std::llround(std::pow(10.0, k / 10.0));
-        if (g > evaluations)
-            return g;
-        ++k;
-    }
-}
-
 namespace {
 
 // A point as it is named in an error: every coordinate for small dimensions, the first few else.
@@ -82,7 +68,7 @@ std::string point_text(const Eigen::VectorXd& x) {
 } // namespace
 
 Objective::Objective(const Problem& problem, Budget budget, BoundPolicy policy, ObjectiveOptions options)
-    : problem_(problem), budget_(budget), policy_(policy), options_(options) {
+    : problem_(problem), budget_(budget), policy_(policy), recorder_(options.record_best_x) {
     budget_.validate();
     if (const auto opt = problem_.known_optimum())
         f_opt_ = opt->f;
@@ -134,17 +120,15 @@ double Objective::account(const Eigen::VectorXd& x, double f) {
     if (std::isnan(f) || (f == -std::numeric_limits<double>::infinity() && f_opt_ && std::isfinite(*f_opt_)))
         throw_bad_value(problem_, f, evaluations_ + 1, x);
     ++evaluations_;
-    if (f < best_f_ || best_x_.size() == 0) {
+    const bool improved = f < best_f_;
+    if (improved || best_x_.size() == 0) {
         best_f_ = f;
         best_x_ = x;
     }
     if (f_opt_ && budget_.target_error && !evaluations_to_target_ &&
         best_f_ - *f_opt_ <= *budget_.target_error)
         evaluations_to_target_ = evaluations_;
-    if (evaluations_ == next_checkpoint_) {
-        checkpoint_trace_.push_back({evaluations_, best_f_});
-        next_checkpoint_ = next_checkpoint(evaluations_);
-    }
+    recorder_.evaluated(evaluations_, f, best_f_, improved);
     return f;
 }
 
@@ -220,10 +204,7 @@ void Objective::end_iteration() {
 }
 
 void Objective::record_iteration() {
-    IterationPoint point{iterations_, evaluations_, best_f_, {}};
-    if (options_.record_best_x)
-        point.best_x = best_x_;
-    iteration_trace_.push_back(std::move(point));
+    recorder_.iteration_ended(iterations_, evaluations_, best_f_, best_x_);
 }
 
 bool Objective::exhausted() const {
@@ -241,9 +222,7 @@ std::int64_t Objective::remaining_evaluations() const {
 }
 
 void Objective::finish() {
-    if (evaluations_ > 0 &&
-        (checkpoint_trace_.empty() || checkpoint_trace_.back().evaluations != evaluations_))
-        checkpoint_trace_.push_back({evaluations_, best_f_});
+    recorder_.finish(evaluations_, best_f_);
 }
 
 } // namespace mhb

@@ -3,8 +3,9 @@
 //   - repairs out-of-bounds candidates by the policy the optimiser declares (clamp by default),
 //   - counts every evaluation and enforces the budget exactly,
 //   - keeps the best-so-far, and
-//   - records the convergence trace: best-so-far at the end of every iteration and at a fixed,
-//     log-spaced grid of evaluation counts shared by every run (so curves share one x-axis).
+//   - tells its TraceRecorder (problems/trace_recorder.hpp) of every evaluation and iteration,
+//     which keeps best-so-far at the end of every iteration, on a fixed log-spaced grid of
+//     evaluation counts shared by every run, and at every strict improvement.
 //
 // Budget enforcement: once the budget is spent, evaluate() throws BudgetExhausted instead of
 // evaluating. Optimisers loop `while (!objective.exhausted())`, and an evaluation asked for in
@@ -27,6 +28,7 @@
 #include <vector>
 
 #include "problems/problem.hpp"
+#include "problems/trace_recorder.hpp"
 
 namespace mhb {
 
@@ -52,26 +54,9 @@ const char* to_string(BoundPolicy policy);
 // Thrown by Objective::evaluate when the budget is already spent.
 struct BudgetExhausted {};
 
-struct IterationPoint {
-    std::int64_t iteration = 0; // 0 = after initialisation
-    std::int64_t evaluations = 0;
-    double best_f = 0.0;
-    Eigen::VectorXd best_x; // empty unless ObjectiveOptions::record_best_x
-};
-
-struct CheckpointPoint {
-    std::int64_t evaluations = 0;
-    double best_f = 0.0;
-};
-
 struct ObjectiveOptions {
     bool record_best_x = false; // keep best x at every iteration (parameter trajectories)
 };
-
-// The shared evaluation grid: about ten points per decade (1, 2, 3, 4, 5, 6, 8, 10, 13, 16, 20,
-// 25, ...), i.e. round(10^(k/10)) for k = 0, 1, 2, ... without repeats.
-// The smallest grid point greater than `evaluations`.
-std::int64_t next_checkpoint(std::int64_t evaluations);
 
 class Objective {
 public:
@@ -115,8 +100,14 @@ public:
     [[nodiscard]] const Eigen::VectorXd& best_x() const { return best_x_; }
     [[nodiscard]] std::optional<std::int64_t> evaluations_to_target() const { return evaluations_to_target_; }
 
-    [[nodiscard]] const std::vector<IterationPoint>& iteration_trace() const { return iteration_trace_; }
-    [[nodiscard]] const std::vector<CheckpointPoint>& checkpoint_trace() const { return checkpoint_trace_; }
+    // What the recorder kept (see trace_recorder.hpp); the two traces below are shorthands.
+    [[nodiscard]] const TraceRecorder& recorder() const { return recorder_; }
+    [[nodiscard]] const std::vector<IterationPoint>& iteration_trace() const {
+        return recorder_.iteration_trace();
+    }
+    [[nodiscard]] const std::vector<CheckpointPoint>& checkpoint_trace() const {
+        return recorder_.checkpoint_trace();
+    }
 
     // Closes the trace: the final evaluation count becomes the last checkpoint. Idempotent.
     void finish();
@@ -131,16 +122,13 @@ private:
     const Problem& problem_;
     Budget budget_;
     BoundPolicy policy_;
-    ObjectiveOptions options_;
     std::optional<double> f_opt_;
     std::int64_t evaluations_ = 0;
     std::int64_t iterations_ = 0;
-    std::int64_t next_checkpoint_ = 1;
     double best_f_ = std::numeric_limits<double>::infinity();
     Eigen::VectorXd best_x_;
     std::optional<std::int64_t> evaluations_to_target_;
-    std::vector<IterationPoint> iteration_trace_;
-    std::vector<CheckpointPoint> checkpoint_trace_;
+    TraceRecorder recorder_;
 };
 
 } // namespace mhb

@@ -33,6 +33,39 @@ std::uint64_t count(ByteReader& in) {
     return n;
 }
 
+// The sections after wall_seconds (see record_codec.hpp).
+enum Section : std::uint64_t { end_of_sections = 0, improvements_section = 1 };
+
+void write_improvements(ByteWriter& out, const ImprovementTrace& trace) {
+    ByteWriter body;
+    body.u64(trace.points.size());
+    for (const auto& p : trace.points) {
+        body.i64(p.evaluations);
+        body.f64(p.best_f);
+    }
+    body.f64(trace.last_f);
+    out.u64(improvements_section);
+    out.text(body.bytes());
+}
+
+ImprovementTrace read_improvements(std::string_view bytes) {
+    ByteReader in(bytes, "record: improvements");
+    ImprovementTrace trace;
+    const std::uint64_t n = count(in);
+    trace.points.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(n, 1u << 16)));
+    for (std::uint64_t i = 0; i < n; ++i) {
+        CheckpointSample p;
+        p.evaluations = in.i64();
+        p.best_f = in.f64();
+        trace.points.push_back(p);
+    }
+    trace.last_f = in.f64();
+    if (!in.at_end())
+        throw std::runtime_error("record: improvements: " + std::to_string(bytes.size()) +
+                                 " bytes hold more than the trace");
+    return trace;
+}
+
 } // namespace
 
 void ByteWriter::u64(std::uint64_t value) {
@@ -112,6 +145,9 @@ void encode_record(ByteWriter& out, const RunRecord& r, double wall_seconds) {
         out.f64(c.best_f);
     }
     out.f64(wall_seconds);
+    if (r.improvements)
+        write_improvements(out, *r.improvements);
+    out.u64(end_of_sections);
 }
 
 std::string encode_record(const RunRecord& record, double wall_seconds) {
@@ -120,7 +156,7 @@ std::string encode_record(const RunRecord& record, double wall_seconds) {
     return out.take();
 }
 
-DecodedRecord decode_record(ByteReader& in) {
+DecodedRecord decode_record(ByteReader& in, bool from_store) {
     DecodedRecord d;
     RunRecord& r = d.record;
     r.run_id = in.i64();
@@ -162,6 +198,18 @@ DecodedRecord decode_record(ByteReader& in) {
         r.checkpoints.push_back(c);
     }
     d.wall_seconds = in.f64();
+    // A record stored before sections existed ends here, at the end of its block.
+    if (from_store && in.at_end())
+        return d;
+    while (true) {
+        const std::uint64_t section = in.u64();
+        if (section == end_of_sections)
+            break;
+        const std::string body = in.text();
+        if (section == improvements_section)
+            r.improvements = read_improvements(body);
+        // Any other section is one a newer mhbench added: skipped, as this one was by older ones.
+    }
     return d;
 }
 

@@ -4,7 +4,12 @@
 // text as one written at once; MPI ranks send records to the writer in it.
 //
 // The format is little-endian, length-prefixed and versioned by the store's block header; it is
-// not meant to be read by anything but decode_record.
+// not meant to be read by anything but decode_record. It grows by sections rather than by a new
+// block version: after the fields every record has always had (up to wall_seconds) come sections,
+// each a tag and a length-prefixed body, then the tag 0. Tag 1 is the ImprovementTrace. A reader
+// skips a section it does not know, and mhbench builds from before sections (whose records end at
+// wall_seconds, as the blocks they stored do) read newer blocks and ignore the sections; a new
+// block version would instead have made them cut every newer block off a store as a torn write.
 #pragma once
 
 #include <cstdint>
@@ -53,8 +58,10 @@ struct DecodedRecord {
     RunRecord record;
     double wall_seconds = 0.0;
 };
-// Throws std::runtime_error when the bytes are truncated or malformed.
-DecodedRecord decode_record(ByteReader& in);
+// Throws std::runtime_error when the bytes are truncated or malformed. `from_store`: the bytes are
+// a store block's, which may end at wall_seconds (stored before sections); anywhere else, such as
+// in a message between MPI ranks, that would be a truncation.
+DecodedRecord decode_record(ByteReader& in, bool from_store = false);
 DecodedRecord decode_record(std::string_view bytes);
 
 } // namespace mhb

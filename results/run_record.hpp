@@ -20,10 +20,20 @@ struct CurvePoint {
     std::vector<double> best_x; // only for problems with named parameters (trajectories)
 };
 
-// Best-so-far after exactly `evaluations` evaluations, on the grid every run shares.
+// Best-so-far after exactly `evaluations` evaluations, on the grid every run shares; in an
+// ImprovementTrace, the f of evaluation number `evaluations`, which improved on all before it.
 struct CheckpointSample {
     std::int64_t evaluations = 0;
     double best_f = 0.0;
+};
+
+// Every strict improvement of best-so-far f, at the evaluation that made it (the first f below
+// +inf is one), and the f of the run's last evaluation: what IOHexperimenter's analyzer logger
+// writes by default (a row per improvement, and a last row for the last evaluation when it is not
+// one). The Objective's TraceRecorder records it (problems/trace_recorder.hpp).
+struct ImprovementTrace {
+    std::vector<CheckpointSample> points; // by evaluation
+    double last_f = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RunRecord {
@@ -54,6 +64,9 @@ struct RunRecord {
 
     std::vector<CurvePoint> curve;
     std::vector<CheckpointSample> checkpoints;
+    // Absent for failed runs, and for runs stored before improvements were recorded (then the
+    // grid above is all there is).
+    std::optional<ImprovementTrace> improvements;
 
     // best_f - f_opt, where the optimum is known.
     [[nodiscard]] std::optional<double> error() const {

@@ -10,6 +10,10 @@
 //   curves.csv       best-so-far per iteration (long format)          } identical for any thread
 //   checkpoints.csv  best-so-far on the shared evaluation grid        } count, finished only by
 //   trajectories.csv best x per iteration, for named parameters       } StudyWriter::finish()
+//   improvements.csv every strict improvement of best-so-far f (event improvement) and the last
+//                    evaluation (event last) of each run that recorded them; runs stored before
+//                    improvements were recorded have no rows (the file itself is newer: a study
+//                    without it is read with no improvements)
 //   algorithms.csv   one row per algorithm of the study: its canonical spec, its display label
 //                    and its full spec (every parameter, defaults included)
 //   timings.csv      wall seconds per run (the one thing that varies between two runs)
@@ -43,6 +47,7 @@ struct StudyFiles {
     static constexpr const char* curves = "curves.csv";
     static constexpr const char* checkpoints = "checkpoints.csv";
     static constexpr const char* trajectories = "trajectories.csv";
+    static constexpr const char* improvements = "improvements.csv";
     static constexpr const char* timings = "timings.csv";
     static constexpr const char* algorithms = "algorithms.csv";
     // Marks a directory as a mhbench study, so that --out never takes over a directory of the
@@ -56,7 +61,9 @@ struct StudyFiles {
 };
 
 // The format of store.bin and of the records in it; part of every run's identity, so a change to
-// what a record holds makes earlier stores refuse to be mixed with new runs.
+// what a record holds makes earlier stores refuse to be mixed with new runs. What is only added to
+// a record (the improvement trace) is a section of it (record_codec.hpp) instead: the values of a
+// stored run are still those this mhbench computes, so it stays usable, without the new section.
 inline constexpr int store_format_version = 3;
 
 // What determines a run's record, and how a user names the run. The runner builds one per run of
@@ -170,7 +177,7 @@ struct StudyData {
     // In study order; empty for studies written before algorithms.csv existed (then label and
     // full spec are the spec itself).
     std::vector<AlgorithmInfo> algorithms;
-    std::vector<RunRecord> runs; // sorted by run_id, with curve and checkpoints filled in
+    std::vector<RunRecord> runs; // sorted by run_id, with curve, checkpoints and improvements filled in
     std::map<std::int64_t, double> wall_seconds;
 };
 

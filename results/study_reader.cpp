@@ -1,5 +1,6 @@
 // load_study: a finished study directory read back into run records (see store.hpp).
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -156,6 +157,36 @@ StudyData load_study(const fs::path& dir) {
                                      " is not in curves.csv");
         for (const auto& name : r.parameter_names)
             point->best_x.push_back(trajectories.number(row, trajectories.column(name)));
+    }
+    // Studies written before improvements were recorded have no such file: their runs keep none.
+    if (fs::exists(dir / StudyFiles::improvements)) {
+        const CsvTable improvements = read_csv(dir / StudyFiles::improvements);
+        const std::size_t event = improvements.column("event");
+        const std::size_t evaluations = improvements.column("evaluations");
+        const std::size_t f = improvements.column("f");
+        for (std::size_t row = 0; row < improvements.rows.size(); ++row) {
+            RunRecord& r = data.runs[index[find_run(index, improvements, row)]];
+            const std::string& kind = improvements.rows[row][event];
+            if (kind != "improvement" && kind != "last")
+                throw std::runtime_error(improvements.path.string() + ", line " +
+                                         std::to_string(improvements.line_numbers[row]) +
+                                         ", column 'event': '" + kind + "' is not improvement or last");
+            ImprovementTrace& trace = r.improvements ? *r.improvements : r.improvements.emplace();
+            if (kind == "last") {
+                trace.last_f = improvements.number(row, f);
+                continue;
+            }
+            const CheckpointSample point{improvements.integer(row, evaluations), improvements.number(row, f)};
+            // Each improves on the one before: later, and strictly lower (which also rules out NaN).
+            if (point.evaluations < 1 ||
+                (!trace.points.empty() && (point.evaluations <= trace.points.back().evaluations ||
+                                           !(point.best_f < trace.points.back().best_f))) ||
+                std::isnan(point.best_f))
+                throw std::runtime_error(improvements.path.string() + ", line " +
+                                         std::to_string(improvements.line_numbers[row]) +
+                                         ": not an improvement on the run's previous row");
+            trace.points.push_back(point);
+        }
     }
     const CsvTable timings = read_csv(dir / StudyFiles::timings);
     for (std::size_t row = 0; row < timings.rows.size(); ++row)

@@ -35,15 +35,16 @@ std::string join_numbers(const std::vector<double>& values) {
     return out;
 }
 
-const char* const result_files[] = {StudyFiles::runs,         StudyFiles::curves,  StudyFiles::checkpoints,
-                                    StudyFiles::trajectories, StudyFiles::timings, StudyFiles::journal,
-                                    StudyFiles::store};
+const char* const result_files[] = {
+    StudyFiles::runs,         StudyFiles::curves,  StudyFiles::checkpoints, StudyFiles::trajectories,
+    StudyFiles::improvements, StudyFiles::timings, StudyFiles::journal,     StudyFiles::store};
 
 struct Block {
     std::string run_line;
     std::string curve_lines;
     std::string checkpoint_lines;
     std::string trajectory_lines;
+    std::string improvement_lines;
     std::string timing_line;
 };
 
@@ -97,6 +98,14 @@ Block render(const RunRecord& r, double wall_seconds, const std::vector<std::str
     for (const auto& c : r.checkpoints)
         block.checkpoint_lines +=
             id + ',' + std::to_string(c.evaluations) + ',' + csv_number(c.best_f) + '\n';
+    if (r.improvements) {
+        for (const auto& p : r.improvements->points)
+            block.improvement_lines +=
+                id + ",improvement," + std::to_string(p.evaluations) + ',' + csv_number(p.best_f) + '\n';
+        // Also marks the run as one whose improvements were recorded (it may have none: +inf only).
+        block.improvement_lines +=
+            id + ",last," + std::to_string(r.evaluations) + ',' + csv_number(r.improvements->last_f) + '\n';
+    }
     block.timing_line = id + ',' + csv_number(wall_seconds) + '\n';
     return block;
 }
@@ -427,7 +436,7 @@ void StudyWriter::finish() {
         ByteReader reader(payload, (dir_ / StudyFiles::store).string());
         for (int skipped = 0; skipped < 4; ++skipped) // identity, slot, facts, notes
             reader.text();
-        DecodedRecord decoded = decode_record(reader);
+        DecodedRecord decoded = decode_record(reader, true);
         // The record as this study names it: a run found by identity may come from a study that
         // numbered it differently or read its data file from another path.
         RunRecord& record = decoded.record;
@@ -446,6 +455,7 @@ void StudyWriter::finish() {
         out.curve_lines += block.curve_lines;
         out.checkpoint_lines += block.checkpoint_lines;
         out.trajectory_lines += block.trajectory_lines;
+        out.improvement_lines += block.improvement_lines;
         out.timing_line += block.timing_line;
         ++summary.runs;
         summary.evaluations += record.evaluations;
@@ -454,6 +464,7 @@ void StudyWriter::finish() {
             if (summary.first_failures.size() < 3) {
                 record.curve.clear();
                 record.checkpoints.clear();
+                record.improvements.reset();
                 summary.first_failures.push_back(std::move(record));
             }
         }
@@ -479,6 +490,7 @@ void StudyWriter::finish() {
     Output curves = open(StudyFiles::curves);
     Output checkpoints = open(StudyFiles::checkpoints);
     Output trajectories = open(StudyFiles::trajectories);
+    Output improvements = open(StudyFiles::improvements);
     Output timings = open(StudyFiles::timings);
     runs.out << runs_csv_header(parameter_columns_);
     curves.out << "run_id,iteration,evaluations,best_f\n";
@@ -487,6 +499,7 @@ void StudyWriter::finish() {
     for (const auto& p : parameter_columns_)
         trajectories.out << "," << p;
     trajectories.out << '\n';
+    improvements.out << "run_id,event,evaluations,f\n";
     timings.out << "run_id,wall_seconds\n";
 
     summary_ = StudySummary{};
@@ -568,6 +581,7 @@ void StudyWriter::finish() {
                     curves.out << part->text.curve_lines;
                     checkpoints.out << part->text.checkpoint_lines;
                     trajectories.out << part->text.trajectory_lines;
+                    improvements.out << part->text.improvement_lines;
                     timings.out << part->text.timing_line;
                     summary_.runs += part->summary.runs;
                     summary_.failed += part->summary.failed;
@@ -576,7 +590,7 @@ void StudyWriter::finish() {
                         if (summary_.first_failures.size() < 3)
                             summary_.first_failures.push_back(std::move(failure));
                 }));
-    for (Output* o : {&curves, &checkpoints, &trajectories, &timings, &runs}) {
+    for (Output* o : {&curves, &checkpoints, &trajectories, &improvements, &timings, &runs}) {
         o->out.close();
         if (!o->out)
             throw std::runtime_error(o->path.string() + ": writing failed (" + std::strerror(errno) + ")");

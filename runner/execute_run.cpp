@@ -47,6 +47,11 @@ RunRecord execute_run(const RunRequest& request) {
             record.curve.push_back({p.iteration, p.evaluations, p.best_f, to_vector(p.best_x)});
         for (const auto& c : objective.checkpoint_trace())
             record.checkpoints.push_back({c.evaluations, c.best_f});
+        ImprovementTrace& improvements = record.improvements.emplace();
+        improvements.points.reserve(objective.recorder().improvements().size());
+        for (const auto& i : objective.recorder().improvements())
+            improvements.points.push_back({i.evaluations, i.best_f});
+        improvements.last_f = objective.recorder().last_f();
         if (objective.evaluations() == 0) {
             record.ok = false;
             record.message = "the optimiser made no evaluation";
@@ -61,6 +66,7 @@ RunRecord execute_run(const RunRequest& request) {
     if (!record.ok) {
         record.curve.clear();
         record.checkpoints.clear();
+        record.improvements.reset();
     }
     return record;
 }

@@ -61,8 +61,8 @@ const std::string small_study =
     "--algorithms \"random-search random-search:batch=20\" --problems sphere:dim=3 "
     "--problem sphere:dim=5,bound=2 --runs 4 --iterations 30 --evaluations 500 --seed 9";
 
-const char* const deterministic_files[] = {"runs.csv", "curves.csv", "checkpoints.csv", "trajectories.csv",
-                                           "study.ini"};
+const char* const deterministic_files[] = {"runs.csv",         "curves.csv",       "checkpoints.csv",
+                                           "trajectories.csv", "improvements.csv", "study.ini"};
 
 TEST(CliRun, OneAndTwoThreadsGiveByteIdenticalResults) {
     const fs::path one = fresh("threads1");

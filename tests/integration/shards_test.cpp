@@ -41,8 +41,8 @@ TEST(Shards, ThreeShardsMergedAreTheStudyOneProcessWritesByteForByte) {
     const auto r = run_mhbench("merge " + merged.string() + " " + shards[2].string() + " " +
                                shards[0].string() + " " + shards[1].string() + " --no-figures --quiet");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    for (const char* file :
-         {"runs.csv", "curves.csv", "checkpoints.csv", "trajectories.csv", "study.ini", "algorithms.csv"})
+    for (const char* file : {"runs.csv", "curves.csv", "checkpoints.csv", "trajectories.csv",
+                             "improvements.csv", "study.ini", "algorithms.csv"})
         EXPECT_EQ(read_text(merged / file), read_text(one / file)) << file;
     EXPECT_TRUE(fs::exists(merged / "report"));
     EXPECT_NE(read_text(merged / "context.ini").find("shards = 3\n"), std::string::npos);

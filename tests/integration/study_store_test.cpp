@@ -21,8 +21,9 @@ fs::path fresh(const std::string& name) {
     return dir;
 }
 
-const char* const record_files[] = {"runs.csv",         "curves.csv",     "checkpoints.csv",
-                                    "trajectories.csv", "algorithms.csv", "study.ini"};
+const char* const record_files[] = {"runs.csv",         "curves.csv",       "checkpoints.csv",
+                                    "trajectories.csv", "improvements.csv", "algorithms.csv",
+                                    "study.ini"};
 
 void expect_same_records(const fs::path& a, const fs::path& b) {
     for (const char* file : record_files)
@@ -198,7 +199,8 @@ void kill_then_complete(const std::string& name, const std::string& extra, const
     EXPECT_EQ(killed.exit_code, 137) << killed.err;
     const auto again = run_shell(command);
     ASSERT_EQ(again.exit_code, 0) << again.err;
-    for (const char* file : {"runs.csv", "curves.csv", "checkpoints.csv", "trajectories.csv"})
+    for (const char* file :
+         {"runs.csv", "curves.csv", "checkpoints.csv", "trajectories.csv", "improvements.csv"})
         EXPECT_EQ(read_text(dir / file), read_text(reference / file)) << file;
     // No process of the killed session remains. The pattern's brackets keep grep from finding
     // its own command line.

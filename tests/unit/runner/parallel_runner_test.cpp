@@ -42,8 +42,8 @@ RunnerOutcome run_into(const fs::path& dir, const PreparedStudy& study, RunnerOp
     return run_study(study, writer, options);
 }
 
-const char* const deterministic_files[] = {"runs.csv", "curves.csv", "checkpoints.csv", "trajectories.csv",
-                                           "study.ini"};
+const char* const deterministic_files[] = {"runs.csv",         "curves.csv",       "checkpoints.csv",
+                                           "trajectories.csv", "improvements.csv", "study.ini"};
 
 TEST(ParallelRunner, RunsEveryRunOnceAndFinishesTheStudy) {
     const PreparedStudy study = make_study();
