@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "results/hypothesis_tests.hpp"
@@ -19,13 +20,22 @@ std::string alpha_text(double alpha) {
     return format_number(alpha, 3);
 }
 
-// Best-so-far of a run after at most `budget` evaluations (from its iteration curve and its
-// checkpoints, whichever recorded the latest point within the budget); NaN if none is.
-double value_at_budget(const RunRecord& r, double budget) {
-    std::int64_t best_evaluations = -1;
+// Best-so-far of a run after `at` evaluations: its final value if it stopped by then, else the
+// last recorded point with evaluations <= at (its exact improvements where recorded, else its
+// iteration curve and checkpoints); NaN if none is.
+double value_at_evaluations(const RunRecord& r, std::int64_t at) {
+    if (r.evaluations <= at)
+        return r.best_f;
     double value = NAN;
+    if (r.improvements) {
+        for (const auto& p : r.improvements->points)
+            if (p.evaluations <= at)
+                value = p.best_f;
+        return value;
+    }
+    std::int64_t best_evaluations = -1;
     const auto consider = [&](std::int64_t evaluations, double f) {
-        if (static_cast<double>(evaluations) <= budget && evaluations >= best_evaluations) {
+        if (evaluations <= at && evaluations >= best_evaluations) {
             best_evaluations = evaluations;
             value = f;
         }
@@ -36,6 +46,61 @@ double value_at_budget(const RunRecord& r, double budget) {
         consider(c.evaluations, c.best_f);
     return value;
 }
+
+// The evaluation count E the budget columns take fractions of, for one problem: the study's
+// evaluation budget ("evaluations=N" in the runs' budget) when it has one, else the largest
+// evaluation count any run on the problem spent. One E per problem, so that every algorithm is
+// measured at the same counts.
+std::int64_t budget_evaluations(const StudyIndex& index, const std::string& problem) {
+    const SpecText budget = split_spec_text("budget:" + index.budget());
+    if (const auto e = spec_number(budget, "evaluations"); e && *e >= 1)
+        return static_cast<std::int64_t>(*e);
+    std::int64_t most = 0;
+    for (const auto& a : index.algorithms_on(problem))
+        for (const auto* r : index.find(problem, a)->runs)
+            most = std::max(most, r->evaluations);
+    return most;
+}
+
+std::int64_t evaluations_at(double fraction, std::int64_t budget) {
+    return static_cast<std::int64_t>(std::floor(fraction * static_cast<double>(budget) + 1e-9));
+}
+
+// "+", "=" and "-" counted: the wins, ties and losses of one algorithm against the reference.
+std::string win_tie_loss(const std::vector<std::string>& markers) {
+    std::size_t w = 0;
+    std::size_t t = 0;
+    std::size_t l = 0;
+    for (const auto& m : markers) {
+        w += m == "+" ? 1U : 0U;
+        t += m == "=" ? 1U : 0U;
+        l += m == "-" ? 1U : 0U;
+    }
+    return std::to_string(w) + "/" + std::to_string(t) + "/" + std::to_string(l);
+}
+
+// A test's name as a cell; LaTeX says only its variant (the caption names the test): "exact" or
+// "normal approx." (with tie and continuity correction).
+TableCell test_cell(const TestResult& test) {
+    TableCell cell = text_cell(test.name);
+    const std::size_t comma = test.name.find(", ");
+    const std::string variant = comma == std::string::npos ? "" : test.name.substr(comma + 2);
+    cell.latex =
+        variant.empty() ? "---" : (variant.rfind("normal approx.", 0) == 0 ? "normal approx." : variant);
+    return cell;
+}
+
+// A +/=/- marker as a cell: text in Markdown and CSV, maths in LaTeX.
+TableCell marker_cell(const std::string& marker) {
+    TableCell cell = text_cell(marker);
+    if (!marker.empty())
+        cell.latex = "$" + marker + "$";
+    return cell;
+}
+
+const char* const wtl_note =
+    " Rows under the rule: w/t/l, the number of problems on which the algorithm is significantly better "
+    "than the reference (+), not significantly different (=) and significantly worse (-).";
 
 // What a group without a successful run shows where its statistics would be.
 std::string no_successful_run_text(const RunGroup& g) {
@@ -113,8 +178,23 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
     t.title = "Summary of final best-so-far values per problem and algorithm";
     t.header = {"Problem", "Algorithm", "Runs",  "Evaluations (mean)", "Mean",         "Std", "Median",
                 "IQR",     "Best",      "Worst", "Mean error f - f*",  "Success rate", "ERT"};
+    // One evaluation count E per problem for the budget columns; when every problem has the same,
+    // the headers name the counts, else a column gives each problem's E.
+    std::map<std::string, std::int64_t> budgets;
+    for (const auto& p : index.problems())
+        budgets[p] = budget_evaluations(index, p);
+    bool one_budget = true;
+    for (const auto& [p, e] : budgets)
+        one_budget = one_budget && e == budgets.begin()->second;
+    const std::size_t first_budget_column = t.header.size();
     for (double fraction : options.budget_fractions)
-        t.header.push_back("Median at " + percent_text(fraction) + " budget");
+        t.header.push_back(one_budget && !budgets.empty()
+                               ? "Median at " +
+                                     std::to_string(evaluations_at(fraction, budgets.begin()->second)) +
+                                     " evals (" + percent_text(fraction) + ")"
+                               : "Median at " + percent_text(fraction) + " of E");
+    if (!one_budget)
+        t.header.push_back("E (evaluations)");
     // A problem on which no run of any algorithm records reaching a target had none set.
     const auto problem_has_target = [&](const std::string& problem) {
         for (const auto& a : index.algorithms_on(problem))
@@ -126,6 +206,7 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
     std::size_t without_success = 0;
     for (const auto& g : index.groups()) {
         const bool has_target = problem_has_target(g.problem);
+        const std::int64_t budget = budgets[g.problem];
         if (g.runs.empty()) { // every run failed: a row that says so (success rate 0, ERT inf)
             ++without_success;
             std::vector<TableCell> row(t.header.size(), empty_cell());
@@ -135,8 +216,10 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
             row[4] = text_cell(no_successful_run_text(g));
             if (has_target) {
                 row[11] = number_cell(0.0, 3);
-                row[12] = text_cell("inf");
+                row[12] = number_cell(INFINITY, 4);
             }
+            if (!one_budget)
+                row.back() = number_cell(static_cast<double>(budget), 6);
             t.add_row(std::move(row));
             continue;
         }
@@ -144,10 +227,8 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
         std::vector<double> evaluations;
         std::vector<double> errors;
         std::vector<TargetHit> hits;
-        double most_evaluations = 0.0;
         for (const auto* r : g.runs) {
             evaluations.push_back(static_cast<double>(r->evaluations));
-            most_evaluations = std::max(most_evaluations, static_cast<double>(r->evaluations));
             if (r->error())
                 errors.push_back(*r->error());
             hits.push_back(
@@ -163,31 +244,49 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
             text_cell(g.problem),
             text_cell(index.label(g.algorithm)),
             text_cell(std::to_string(g.runs.size()) + "/" + std::to_string(g.runs.size() + g.failed)),
-            number_cell(mean(evaluations), 6),
-            number_cell(s.mean),
-            number_cell(s.std, 3),
-            number_cell(s.median),
-            number_cell(s.iqr(), 3),
-            number_cell(s.best),
-            number_cell(s.worst),
-            errors.empty() ? empty_cell() : number_cell(mean(errors), 4),
+            fixed_cell(mean(evaluations), 1),
+            number_cell(s.mean, 4),
+            number_cell(s.std, 2),
+            number_cell(s.median, 4),
+            number_cell(s.iqr(), 2),
+            number_cell(s.best, 4),
+            number_cell(s.worst, 4),
+            errors.empty() ? empty_cell() : number_cell(mean(errors), 3),
             has_target ? number_cell(static_cast<double>(successes) / total, 3) : empty_cell(),
-            !has_target ? empty_cell() : (ert ? number_cell(*ert, 6) : text_cell("inf"))};
+            !has_target ? empty_cell() : number_cell(ert ? *ert : INFINITY, 4)};
         for (double fraction : options.budget_fractions) {
             std::vector<double> values;
             for (const auto* r : g.runs)
-                if (const double v = value_at_budget(*r, fraction * most_evaluations); !std::isnan(v))
+                if (const double v = value_at_evaluations(*r, evaluations_at(fraction, budget));
+                    !std::isnan(v))
                     values.push_back(v);
-            row.push_back(values.empty() ? empty_cell() : number_cell(summarize(values).median));
+            row.push_back(values.empty() ? empty_cell() : number_cell(summarize(values).median, 4));
         }
+        if (!one_budget)
+            row.push_back(number_cell(static_cast<double>(budget), 6));
         t.add_row(std::move(row));
+    }
+    std::string budget_note;
+    if (!one_budget) {
+        budget_note = " E per problem:";
+        std::size_t listed = 0;
+        for (const auto& [p, e] : budgets)
+            if (++listed <= 12)
+                budget_note += (listed == 1 ? " " : ", ") + std::to_string(e) + " on " + p;
+        budget_note += budgets.size() > 12 ? ", ... (column E)." : ".";
     }
     t.caption =
         "Std is the sample standard deviation (two-pass), IQR = q75 - q25 (linear interpolation, type 7). "
         "Success: the run reached the study's target (blank: no run on the problem reached one, or none was "
-        "set); ERT = evaluations of all runs (to the target for "
-        "successful ones) / successful runs, as COCO defines it. Budget columns: median best-so-far after "
-        "that fraction of the largest evaluation count of the group.";
+        "set); ERT = evaluations of all runs (to the target for successful ones) / successful runs, as COCO "
+        "defines it. Budget columns: median over runs of the best-so-far value after that many evaluations, "
+        "a fraction of one evaluation count E per problem, the same for every algorithm: " +
+        std::string(
+            index.budget().find("evaluations=") != std::string::npos
+                ? "the study's evaluation budget"
+                : "the largest evaluation count any run on the problem spent (the budget is not one of "
+                  "evaluations)") +
+        "; a run that stopped earlier counts with its final value." + budget_note;
     if (index.failed_runs() > 0)
         t.caption += " Runs: successful/total; a failed run counts as unsuccessful in the success rate and "
                      "is left out of every other column.";
@@ -195,6 +294,35 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
         t.caption += " " + std::to_string(without_success) +
                      (without_success == 1 ? " group has" : " groups have") + " no successful run.";
     t.caption += left_out_notes(index);
+
+    // LaTeX: the problem and algorithm repeat in every part; the parts are named by these groups.
+    t.latex_column(0).fold_constant = true;
+    t.latex_column(0).heading = true; // the problem heads its rows: a column less
+    t.latex_column(1).key = true;
+    t.latex_column(2).fold_constant = true; // "20/20" on every row, typically
+    const auto group = [&](std::size_t from, std::size_t to, const char* name) {
+        for (std::size_t c = from; c < to && c < t.header.size(); ++c)
+            t.latex_column(c).group = name;
+    };
+    group(2, 4, "runs");
+    group(4, 8, "location and spread");
+    group(8, 11, "range");
+    group(11, 13, "target");
+    group(first_budget_column, t.header.size(), "budget");
+    t.latex_column(3).header = "Evals.\\\\(mean)";
+    t.latex_column(10).header = "Mean error\\\\$f - f^*$";
+    t.latex_column(11).header = "Success\\\\rate";
+    for (std::size_t k = 0; k < options.budget_fractions.size(); ++k) {
+        const double fraction = options.budget_fractions[k];
+        t.latex_column(first_budget_column + k).header =
+            one_budget && !budgets.empty()
+                ? "Median at\\\\" + std::to_string(evaluations_at(fraction, budgets.begin()->second)) +
+                      " evals\\\\(" + format_number(100.0 * fraction, 3) + "\\%)"
+                : "Median at\\\\" + format_number(100.0 * fraction, 3) + "\\% of $E$";
+    }
+    if (!one_budget)
+        t.latex_column(t.header.size() - 1).header = "$E$\\\\(evals)";
+    format_columns(t);
     return t;
 }
 
@@ -226,17 +354,17 @@ Table tests_table(const StudyIndex& index, const std::vector<Comparison>& compar
         any_unpaired = any_unpaired || !c.paired;
         std::vector<TableCell> row = {text_cell(c.problem),
                                       text_cell(index.label(c.algorithm)),
-                                      text_cell(c.test.name),
+                                      test_cell(c.test),
                                       number_cell(c.test.statistic, 6),
-                                      c.test.exact ? empty_cell() : number_cell(c.test.z, 4),
+                                      c.test.exact ? empty_cell() : number_cell(c.test.z, 3),
                                       number_cell(c.test.p_value, 3),
                                       number_cell(c.adjusted_p, 3),
                                       number_cell(c.a12, 3)};
         if (c.paired) {
-            row.push_back(text_cell(std::to_string(c.pairs)));
-            row.push_back(text_cell(c.paired_test.name));
+            row.push_back(number_cell(static_cast<double>(c.pairs), 6));
+            row.push_back(test_cell(c.paired_test));
             row.push_back(number_cell(c.paired_test.statistic, 6));
-            row.push_back(c.paired_test.exact ? empty_cell() : number_cell(c.paired_test.z, 4));
+            row.push_back(c.paired_test.exact ? empty_cell() : number_cell(c.paired_test.z, 3));
             row.push_back(number_cell(c.paired_test.p_value, 3));
             row.push_back(number_cell(c.paired_adjusted_p, 3));
         } else {
@@ -244,9 +372,23 @@ Table tests_table(const StudyIndex& index, const std::vector<Comparison>& compar
             for (int i = 0; i < 5; ++i)
                 row.push_back(empty_cell());
         }
-        row.push_back(text_cell(c.marker));
+        row.push_back(marker_cell(c.marker));
         row.push_back(text_cell(c.paired ? "signed-rank" : "rank-sum"));
         t.add_row(std::move(row));
+    }
+    // Under the rule, each algorithm's wins, ties and losses over the problems.
+    for (const auto& a : index.algorithms()) {
+        std::vector<std::string> markers;
+        for (const auto& c : comparisons)
+            if (c.algorithm == a)
+                markers.push_back(c.marker);
+        if (markers.empty())
+            continue;
+        std::vector<TableCell> row(t.header.size(), empty_cell());
+        row[0] = text_cell("w/t/l");
+        row[1] = text_cell(index.label(a));
+        row[14] = text_cell(win_tie_loss(markers));
+        t.add_footer(std::move(row));
     }
     std::vector<std::string> untested;
     for (const auto& p : index.problems()) {
@@ -274,7 +416,9 @@ Table tests_table(const StudyIndex& index, const std::vector<Comparison>& compar
                                            : (any_paired ? "the signed-rank test (all runs paired)"
                                                          : "the rank-sum test (no runs paired)")) +
                ". +: significantly better than the reference, -: significantly worse, =: no significant "
-               "difference.";
+               "difference. Test variants: exact = the exact null distribution, normal approx. = the normal "
+               "approximation with tie and continuity correction." +
+               wtl_note;
     if (!untested.empty()) {
         caption += " Not tested (every run of the reference failed):";
         for (std::size_t i = 0; i < untested.size(); ++i)
@@ -283,6 +427,29 @@ Table tests_table(const StudyIndex& index, const std::vector<Comparison>& compar
     }
     caption += left_out_notes(index);
     t.caption = std::move(caption);
+
+    // LaTeX: a rank-sum part and a signed-rank part when both do not fit; the name of a test is
+    // said once in the notes when every row has the same.
+    t.latex_column(0).fold_constant = true;
+    t.latex_column(0).heading = true;
+    t.latex_column(1).key = true;
+    for (std::size_t c = 2; c <= 7; ++c)
+        t.latex_column(c).group = "rank-sum test";
+    for (std::size_t c = 8; c <= 13; ++c)
+        t.latex_column(c).group = "signed-rank test";
+    t.latex_column(14).group = "result";
+    t.latex_column(15).group = "result";
+    for (const std::size_t c : {std::size_t{2}, std::size_t{9}, std::size_t{15}})
+        t.latex_column(c).fold_constant = true;
+    t.latex_column(2).header = "Rank-sum\\\\test";
+    t.latex_column(9).header = "Signed-rank\\\\test";
+    t.latex_column(5).header = "$p$";
+    t.latex_column(6).header = "$p$\\\\(Holm)";
+    t.latex_column(8).header = "Paired\\\\runs";
+    t.latex_column(11).header = "Signed-\\\\rank $z$";
+    t.latex_column(12).header = "Signed-\\\\rank $p$";
+    t.latex_column(13).header = "Signed-\\\\rank $p$\\\\(Holm)";
+    format_columns(t);
     return t;
 }
 
@@ -290,7 +457,7 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
                     const ComparisonOptions& options) {
     Table t;
     t.id = "comparison";
-    t.title = "Final values: mean (std) per problem and algorithm";
+    t.title = "Final values: median (IQR) per problem and algorithm";
     t.header = {"Problem"};
     for (const auto& a : index.algorithms())
         t.header.push_back(a == options.reference ? index.label(a) + " (reference)" : index.label(a));
@@ -299,17 +466,26 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
     bool any_paired = false;
     bool any_unpaired = false;
     std::size_t most_runs = 0;
+    // Each algorithm's markers over the problems, for the w/t/l row.
+    std::vector<std::vector<std::string>> markers(index.algorithms().size());
     for (const auto& p : index.problems()) {
         std::vector<TableCell> row = {text_cell(p)};
+        // The markers come from rank tests of the final values, so the cell shows what they test:
+        // the median and the IQR (a mean can sit on the other side of the reference's than most runs).
         double best = INFINITY;
         for (const auto& a : index.algorithms())
             if (const auto* g = index.find(p, a))
-                best = std::min(best, mean(g->final_values()));
-        for (const auto& a : index.algorithms()) {
+                best = std::min(best, summarize(g->final_values()).median);
+        for (std::size_t j = 0; j < index.algorithms().size(); ++j) {
+            const std::string& a = index.algorithms()[j];
             const auto* g = index.find(p, a);
             if (g == nullptr) {
                 const RunGroup* failed = index.group(p, a);
-                row.push_back(failed == nullptr ? empty_cell() : text_cell(no_successful_run_text(*failed)));
+                TableCell cell =
+                    failed == nullptr ? empty_cell() : text_cell(no_successful_run_text(*failed));
+                if (failed != nullptr)
+                    cell.latex = "all " + std::to_string(failed->failed) + " failed";
+                row.push_back(std::move(cell));
                 continue;
             }
             least_runs = std::min(least_runs, g->runs.size());
@@ -317,12 +493,14 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
             const Summary s = summarize(g->final_values());
             std::string marker;
             for (const auto& c : comparisons)
-                if (c.problem == p && c.algorithm == a)
-                    marker = " " + c.marker;
-            // No bold when the best mean is infinite: nothing is best where every mean is inf.
-            TableCell cell{format_number(s.mean, 4) + " (" + format_number(s.std, 2) + ")" + marker, "",
-                           std::isfinite(best) && s.mean == best};
-            row.push_back(cell);
+                if (c.problem == p && c.algorithm == a) {
+                    marker = c.marker;
+                    markers[j].push_back(c.marker);
+                }
+            TableCell cell = spread_cell(s.median, s.iqr(), marker, {3, -1}, {2, -1});
+            // No bold when the best median is infinite: nothing is best where every median is inf.
+            cell.bold = std::isfinite(best) && s.median == best;
+            row.push_back(std::move(cell));
         }
         const bool compared = std::any_of(comparisons.begin(), comparisons.end(),
                                           [&](const Comparison& c) { return c.problem == p; });
@@ -331,6 +509,14 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
         any_unpaired = any_unpaired || (compared && !paired);
         row.push_back(text_cell(!compared ? "" : (paired ? "signed-rank (paired)" : "rank-sum")));
         t.add_row(std::move(row));
+    }
+    if (!comparisons.empty()) {
+        std::vector<TableCell> row(t.header.size(), empty_cell());
+        row[0] = text_cell("w/t/l");
+        for (std::size_t j = 0; j < markers.size(); ++j)
+            if (index.algorithms()[j] != options.reference)
+                row[j + 1] = text_cell(win_tie_loss(markers[j]));
+        t.add_footer(std::move(row));
     }
     const std::string runs = least_runs == most_runs || least_runs == SIZE_MAX
                                  ? std::to_string(most_runs)
@@ -347,11 +533,21 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
         tests += " on the others (seeds differ)";
     if (tests.empty())
         tests = "none (no problem has runs of the reference and another algorithm)";
-    t.caption = "Mean (sample std) of the final best-so-far value over " + runs +
-                " runs; lowest mean in bold. Markers against the reference " +
+    t.caption = "Median (IQR = q75 - q25) of the final best-so-far value over " + runs +
+                " runs; lowest median in bold. The median is shown because the markers come from rank tests "
+                "of the final values, which compare where the runs lie, not their mean. Markers against the "
+                "reference " +
                 index.label(options.reference) + ": " + tests +
                 ", Holm correction across each problem's comparisons, alpha = " + alpha_text(options.alpha) +
-                "; + better, - worse, = no significant difference." + left_out_notes(index);
+                "; + better, - worse, = no significant difference." + (comparisons.empty() ? "" : wtl_note) +
+                left_out_notes(index);
+    // LaTeX: the IQR under the median keeps the columns narrow; the test is said once when it is the
+    // same for every problem.
+    t.latex_spread_below = true;
+    t.latex_column(0).fold_constant = true;
+    t.latex_column(0).wrap = true; // specs break after ',' and ':'; more algorithms fit beside them
+    t.latex_column(t.header.size() - 1).fold_constant = true;
+    format_columns(t);
     return t;
 }
 
@@ -403,9 +599,15 @@ std::optional<Table> across_problems_table(const StudyIndex& index, const Compar
         }
         t.add_row({text_cell(index.label(algorithms[j])), rank, number_cell(posthoc_adjusted[i], 3),
                    number_cell(signed_tests[j].statistic, 6), number_cell(signed_tests[j].p_value, 3),
-                   number_cell(signed_adjusted[i], 3), text_cell(signed_tests[j].name)});
+                   number_cell(signed_adjusted[i], 3), test_cell(signed_tests[j])});
         ++i;
     }
+    t.latex_column(2).header = "Post-hoc $p$\\\\(Holm)";
+    t.latex_column(3).header = "Signed-\\\\rank $V$";
+    t.latex_column(4).header = "Signed-\\\\rank $p$";
+    t.latex_column(5).header = "Signed-\\\\rank $p$\\\\(Holm)";
+    t.latex_column(6).fold_constant = true;
+    t.latex_column(6).header = "Signed-rank\\\\test";
     const std::size_t left_out = index.problems().size() - problems.size();
     t.caption =
         "Over " + std::to_string(problems.size()) +
@@ -421,6 +623,7 @@ std::optional<Table> across_problems_table(const StudyIndex& index, const Compar
         "signed-rank test of each algorithm's per-problem medians against the reference's, paired by "
         "problem, Holm-adjusted; alpha = " +
         alpha_text(options.alpha) + "." + left_out_notes(index);
+    format_columns(t);
     return t;
 }
 

@@ -1,13 +1,16 @@
 // The statistics tables of a study (issue 5), for any problems:
 //  - "summary": per problem x algorithm the descriptive statistics, evaluations spent, error to the
 //    known optimum, success rate and ERT (COCO) to the study's target, median values at fixed
-//    fractions of the evaluation budget;
+//    fractions of one evaluation count per problem (the study's evaluation budget, else the most
+//    any run on the problem spent), the same counts for every algorithm;
 //  - "tests": per problem each algorithm against the reference: Wilcoxon rank-sum p, Holm-adjusted
 //    across that problem's comparisons, Vargha-Delaney A12; where the problem's runs are paired by
 //    seed (StudyIndex::paired), also the Wilcoxon signed-rank test of the paired differences (Holm
 //    likewise); the +/=/- marker from the signed-rank test when paired, the rank-sum test otherwise;
-//  - "comparison": the generic layout, problems as rows and algorithms (labels) as columns, mean
-//    (std) and marker, best mean in bold, and which test made each problem's markers;
+//    a w/t/l row per algorithm counts its markers;
+//  - "comparison": the generic layout, problems as rows and algorithms (labels) as columns, median
+//    (IQR) and marker (the markers come from rank tests: the median is what they are about), best
+//    median in bold, which test made each problem's markers, and a w/t/l row of the markers;
 //  - "across_problems" (two or more problems): Friedman average ranks with the Holm post-hoc against
 //    the reference, and Wilcoxon signed-rank on per-problem medians (paired by problem).
 #pragma once

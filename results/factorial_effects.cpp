@@ -1,6 +1,7 @@
 #include "results/factorial_effects.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -8,6 +9,7 @@
 #include <stdexcept>
 
 #include "results/csv.hpp"
+#include "results/latex_text.hpp"
 #include "results/statistics.hpp"
 
 namespace mhb {
@@ -128,6 +130,27 @@ std::string reading(const EffectEstimate& e, const std::vector<std::string>& fac
     return "interaction " + format_number(e.mean, 3) + ": " + a +
            (e.mean < 0 ? " helps more (or hurts less) with " : " helps less (or hurts more) with ") + b +
            " on, and vice versa";
+}
+
+// An effect's or design's name for LaTeX: escaped, with the " x " of an interaction as a times sign
+// and 2^k as a power.
+std::string latex_times(const std::string& name) {
+    std::string out;
+    for (std::size_t i = 0; i < name.size(); ++i) {
+        if (name.compare(i, 3, " x ") == 0) {
+            out += " $\\times$ ";
+            i += 2;
+        } else if (name.compare(i, 2, "2^") == 0) {
+            std::size_t j = i + 2;
+            while (j < name.size() && std::isdigit(static_cast<unsigned char>(name[j])) != 0)
+                ++j;
+            out += "$2^{" + name.substr(i + 2, j - i - 2) + "}$";
+            i = j - 1;
+        } else {
+            out += latex_escape(std::string(1, name[i]));
+        }
+    }
+    return out;
 }
 
 } // namespace
@@ -386,13 +409,19 @@ std::optional<Table> effects_table(const std::vector<DesignEffects>& designs,
                 left_out_notes.push_back(std::to_string(a.left_out) + " on " + a.problem);
             if (a.infinite_runs > 0 && a.problems == 1)
                 infinite_notes.push_back(std::to_string(a.infinite_runs) + " on " + a.problem);
-            for (const auto& e : a.effects)
-                t.add_row({text_cell(d.design.description()), text_cell(a.problem),
-                           text_cell(scale_name(a.scale)), text_cell(std::to_string(a.blocks)),
-                           text_cell(a.paired ? "yes" : "no"), text_cell(e.name), number_cell(e.mean, 4),
-                           number_cell(e.median, 4), text_cell(e.test.name), number_cell(e.test.statistic, 6),
-                           number_cell(e.test.p_value, 3), number_cell(e.adjusted_p, 3),
-                           text_cell(e.reading)});
+            for (const auto& e : a.effects) {
+                TableCell effect = text_cell(e.name);
+                effect.latex = latex_times(e.name);      // "obl x stepwise" -> obl $\times$ stepwise
+                TableCell test = text_cell(e.test.name); // the caption names the test; LaTeX says how
+                test.latex = e.test.exact ? "exact" : "normal approx.";
+                TableCell design = text_cell(d.design.description());
+                design.latex = latex_times(d.design.description());
+                t.add_row({design, text_cell(a.problem), text_cell(scale_name(a.scale)),
+                           number_cell(static_cast<double>(a.blocks), 6), text_cell(a.paired ? "yes" : "no"),
+                           effect, number_cell(e.mean, 4), number_cell(e.median, 4), test,
+                           number_cell(e.test.statistic, 6), number_cell(e.test.p_value, 3),
+                           number_cell(e.adjusted_p, 3), text_cell(e.reading)});
+            }
         }
     if (t.rows.empty())
         return std::nullopt;
@@ -428,6 +457,26 @@ std::optional<Table> effects_table(const std::vector<DesignEffects>& designs,
     for (const auto& r : rejected)
         caption += " Not a full factorial: " + r.name + " (" + r.why_not + ").";
     t.caption = std::move(caption);
+    // LaTeX: what every row shares (the design, the scale, pairing, the test) goes to the notes; the
+    // problem and the effect repeat in each part (estimates, test, reading) of a split table.
+    for (const std::size_t c : {std::size_t{0}, std::size_t{2}, std::size_t{4}, std::size_t{8}})
+        t.latex_column(c).fold_constant = true;
+    t.latex_column(0).key = false;
+    t.latex_column(1).heading = true; // the problem heads its rows
+    t.latex_column(1).fold_constant = true;
+    t.latex_column(5).key = true;
+    t.latex_column(2).prose = true;
+    t.latex_column(8).header = "Signed-rank\\\\test";
+    t.latex_column(12).prose = true;
+    t.latex_column(12).wrap = true;
+    for (const std::size_t c : {std::size_t{3}, std::size_t{6}, std::size_t{7}})
+        t.latex_column(c).group = "estimate";
+    for (const std::size_t c : {std::size_t{8}, std::size_t{9}, std::size_t{10}, std::size_t{11}})
+        t.latex_column(c).group = "test";
+    t.latex_column(12).group = "reading";
+    t.latex_column(10).header = "$p$";
+    t.latex_column(11).header = "$p$\\\\(Holm)";
+    format_columns(t);
     return t;
 }
 

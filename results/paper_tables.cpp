@@ -1,8 +1,12 @@
 #include "results/paper_tables.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 
+#include "results/csv.hpp"
 #include "results/published_pmsm.hpp"
 #include "results/statistics.hpp"
 
@@ -81,6 +85,39 @@ TableCell empty_cell() {
     return text_cell("");
 }
 
+// A PMSM parameter as the paper writes it: Rs -> $R_s$, psi -> $\psi_f$ (flux linkage).
+std::string parameter_latex(const std::string& name) {
+    if (name == "Rs")
+        return "$R_s$";
+    if (name == "Ld")
+        return "$L_d$";
+    if (name == "Lq")
+        return "$L_q$";
+    if (name == "psi")
+        return "$\\psi_f$";
+    return "";
+}
+
+// Digits after the point of a published value as the paper prints it (its shortest decimal form):
+// a column of published values shows them with the most any of them has, which is exact for every
+// one and adds no digit the paper did not print.
+int printed_decimals(double value) {
+    const std::string text = csv_number(value);
+    const std::size_t e = text.find_first_of("eE");
+    const std::string mantissa = text.substr(0, e);
+    const std::size_t point = mantissa.find('.');
+    int decimals = point == std::string::npos ? 0 : static_cast<int>(mantissa.size() - point - 1);
+    if (e != std::string::npos)
+        decimals -= std::atoi(text.c_str() + e + 1);
+    return std::max(0, decimals);
+}
+
+TableCell latex_text_cell(std::string text, std::string latex) {
+    TableCell cell = text_cell(std::move(text));
+    cell.latex = std::move(latex);
+    return cell;
+}
+
 std::size_t total_runs(const RunGroup& g) {
     return g.runs.size() + g.failed;
 }
@@ -106,6 +143,13 @@ Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
     t.header = {"Algorithm",  "Runs",      "Evaluations (mean)", "Mean f", "Std f",
                 "Paper mean", "Paper std", "Mean gap f - f*",    "f*"};
     const auto algorithms = index.algorithms_on(p.spec);
+    int mean_decimals = 0;
+    int std_decimals = 0;
+    if (p.published != nullptr)
+        for (const auto& f : p.published->fitness) {
+            mean_decimals = std::max(mean_decimals, printed_decimals(f.mean));
+            std_decimals = std::max(std_decimals, printed_decimals(f.std));
+        }
     double best_mean = INFINITY;
     for (const auto& a : algorithms)
         best_mean = std::min(best_mean, mean(index.find(p.spec, a)->final_values()));
@@ -125,11 +169,11 @@ Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
         std::vector<TableCell> row = {
             text_cell(index.label(a)),
             text_cell(std::to_string(g.runs.size()) + "/" + std::to_string(total_runs(g))),
-            number_cell(mean(evaluations), 6), number_cell(s.mean), number_cell(s.std)};
+            fixed_cell(mean(evaluations), 1), number_cell(s.mean, 4), number_cell(s.std, 3)};
         row[3].bold = std::isfinite(best_mean) && s.mean == best_mean;
         if (const auto* f = published_fitness(p, a)) {
-            row.push_back(number_cell(f->mean));
-            row.push_back(number_cell(f->std));
+            row.push_back(fixed_cell(f->mean, mean_decimals));
+            row.push_back(fixed_cell(f->std, std_decimals));
         } else {
             row.push_back(empty_cell());
             row.push_back(empty_cell());
@@ -153,6 +197,24 @@ Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
                 "problem; the gap f - f* is what an optimiser could still gain. Paper values: " +
                 std::string(paper_citation) + (p.published ? ", " + std::string(p.published->table) : "") +
                 paper_rows_note + "." + left_out_notes(index);
+    t.latex_column(1).group = "this study";
+    t.latex_column(2).group = "this study";
+    t.latex_column(3).group = "this study";
+    t.latex_column(4).group = "this study";
+    t.latex_column(5).group = "paper";
+    t.latex_column(6).group = "paper";
+    t.latex_column(7).group = "optimum";
+    t.latex_column(8).group = "optimum";
+    t.latex_column(1).fold_constant = true; // "20/20" on every row, typically
+    t.latex_column(2).header = "Evals.\\\\(mean)";
+    t.latex_column(3).header = "Mean $f$";
+    t.latex_column(4).header = "Std $f$";
+    t.latex_column(5).header = "Paper\\\\mean";
+    t.latex_column(6).header = "Paper\\\\std";
+    t.latex_column(7).header = "Mean gap\\\\$f - f^*$";
+    t.latex_column(8).header = "$f^*$";
+    t.latex_column(8).fold_constant = true;
+    format_columns(t);
     return t;
 }
 
@@ -169,11 +231,49 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
     t.header.push_back("Overall");
     const std::size_t d = names.size();
 
+    // The rows hold different quantities, each formatted alike down a column: values (5 significant
+    // digits), spreads (2) and percentages (3 decimals), so each kind is a group of its own.
+    enum Kind { values = 0, spreads = 1, percents = 2, paper_values = 3, paper_percents = 4 };
+    std::vector<int> paper_decimals(d, 0);
+    std::vector<int> paper_error_decimals(d, 0);
+    if (p.published != nullptr)
+        for (const auto& entry : p.published->identification)
+            for (std::size_t k = 0; k < d; ++k)
+                if (const int j = paper_parameter(names[k]); j >= 0) {
+                    const auto at = static_cast<std::size_t>(j);
+                    paper_decimals[k] = std::max(paper_decimals[k], printed_decimals(entry.identified[at]));
+                    paper_error_decimals[k] =
+                        std::max(paper_error_decimals[k], printed_decimals(entry.error_pct[at]));
+                }
+    const auto quantity = [](const std::string& what) {
+        static const std::pair<const char*, const char*> short_forms[] = {
+            {"identified (mean)", "mean"},    {"std over runs", "std"},
+            {"error % vs true", "error \\%"}, {"deviation % from theta*", "dev.\\ \\%"},
+            {"paper identified", "paper"},    {"paper |error| %", "paper err.\\ \\%"}};
+        for (const auto& [text, latex] : short_forms)
+            if (what == text)
+                return latex_text_cell(what, latex);
+        return text_cell(what);
+    };
+    const auto who_cell = [](const std::string& who) {
+        return who == "theta* (least squares)" ? latex_text_cell(who, "$\\theta^*$ (LS)") : text_cell(who);
+    };
     const auto values_row = [&](const std::string& who, const std::string& what, const std::vector<double>& v,
-                                int digits, TableCell overall) {
-        std::vector<TableCell> row = {text_cell(who), text_cell(what)};
-        for (std::size_t k = 0; k < d; ++k)
-            row.push_back(k < v.size() && std::isfinite(v[k]) ? number_cell(v[k], digits) : empty_cell());
+                                Kind kind, TableCell overall) {
+        std::vector<TableCell> row = {who_cell(who), quantity(what)};
+        for (std::size_t k = 0; k < d; ++k) {
+            if (k >= v.size() || !std::isfinite(v[k])) {
+                row.push_back(empty_cell());
+                continue;
+            }
+            TableCell cell = kind == percents         ? fixed_cell(v[k], 3)
+                             : kind == paper_values   ? fixed_cell(v[k], paper_decimals[k])
+                             : kind == paper_percents ? fixed_cell(v[k], paper_error_decimals[k])
+                                                      : number_cell(v[k], kind == values ? 5 : 2);
+            cell.group = kind;
+            row.push_back(std::move(cell));
+        }
+        overall.group = percents;
         row.push_back(std::move(overall));
         t.add_row(std::move(row));
     };
@@ -187,11 +287,11 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
     const std::vector<double>& truth = first.true_parameters;
     const std::vector<double>& theta = first.x_opt;
     if (!truth.empty())
-        values_row("True value", "", truth, 5, empty_cell());
+        values_row("True value", "value", truth, values, empty_cell());
     if (!theta.empty()) {
-        values_row("theta* (least squares)", "value", theta, 5, empty_cell());
+        values_row("theta* (least squares)", "value", theta, values, empty_cell());
         if (!truth.empty())
-            values_row("theta* (least squares)", "error % vs true", relative_pct(theta, truth), 3,
+            values_row("theta* (least squares)", "error % vs true", relative_pct(theta, truth), percents,
                        empty_cell());
     }
     for (const auto& a : algorithms) {
@@ -209,10 +309,10 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
             }
         }
         const std::string who = index.label(a);
-        values_row(who, "identified (mean)", means, 5, empty_cell());
-        values_row(who, "std over runs", stds, 3, empty_cell());
+        values_row(who, "identified (mean)", means, values, empty_cell());
+        values_row(who, "std over runs", stds, spreads, empty_cell());
         if (!truth.empty())
-            values_row(who, "error % vs true", relative_pct(means, truth), 3, empty_cell());
+            values_row(who, "error % vs true", relative_pct(means, truth), percents, empty_cell());
         if (!theta.empty()) {
             std::vector<double> distances;
             for (const auto* r : g.runs) {
@@ -221,8 +321,8 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
                     sum += std::pow((r->best_x[k] - theta[k]) / theta[k], 2);
                 distances.push_back(100.0 * std::sqrt(sum / static_cast<double>(d)));
             }
-            values_row(who, "deviation % from theta*", relative_pct(means, theta), 3,
-                       number_cell(mean(distances), 3));
+            values_row(who, "deviation % from theta*", relative_pct(means, theta), percents,
+                       fixed_cell(mean(distances), 3));
         }
         if (const auto* published = published_identification(p, a)) {
             std::vector<double> identified(d, NAN);
@@ -232,23 +332,33 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
                     identified[k] = published->identified[static_cast<std::size_t>(j)];
                     errors[k] = published->error_pct[static_cast<std::size_t>(j)];
                 }
-            values_row(who, "paper identified", identified, 5, empty_cell());
-            values_row(who, "paper |error| %", errors, 3, empty_cell());
+            values_row(who, "paper identified", identified, paper_values, empty_cell());
+            values_row(who, "paper |error| %", errors, paper_percents, empty_cell());
         }
     }
     t.caption =
         "Identified parameters over " + runs_note(index, p.spec) +
-        ": mean and sample std of the best x of each run; error % = 100 (mean - true) / true. theta* "
-        "is the exact least-squares optimum (what no optimiser can beat); deviation % = 100 (mean - "
-        "theta*) / theta*, and Overall is the mean over runs of the RMS relative distance to theta* in %. "
-        "Paper values: " +
+        ": mean and sample std of the best point of each run; error % = 100 (mean - true) / true. theta* "
+        "is the exact least-squares (LS) optimum (what no optimiser can beat); deviation % (dev. %) = 100 "
+        "(mean - theta*) / theta*, and Overall is the mean over runs of the RMS relative distance to theta* "
+        "in %. Percentages to 3 decimals. Paper values: " +
         std::string(paper_citation) + (p.published ? ", " + std::string(p.published->table) : "") +
-        " (its errors are magnitudes)" + paper_rows_note + "." + left_out_notes(index);
+        " (its errors, paper err. %, are magnitudes)" + paper_rows_note + "." + left_out_notes(index);
+    t.latex_column(0).heading = true; // each algorithm heads its rows: a column less
+    t.latex_column(1).key = true;
+    for (std::size_t k = 0; k < d; ++k)
+        t.latex_column(2 + k).header = parameter_latex(names[k]);
+    format_columns(t);
     return t;
 }
 
-std::string value_and_error(double value, double error_pct) {
-    return format_number(value, 4) + " / " + format_fixed(error_pct, 1) + "%";
+// "value / |error|%" as the paper's Table 4 prints it; the CSV keeps both at full precision.
+TableCell value_and_error(double value, double error_pct, Digits value_digits, int group) {
+    TableCell cell = spread_cell(value, error_pct, "", value_digits, {1, 1});
+    cell.spread_style = SpreadStyle::slash_percent;
+    cell.group = group;
+    cell.value = csv_number(value) + " / " + csv_number(error_pct) + "%";
+    return cell;
 }
 
 Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& problems) {
@@ -258,6 +368,13 @@ Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& 
     t.header = {"Condition", "Algorithm", "Source"};
     for (const auto& n : pmsm_parameter_names)
         t.header.push_back(std::string(n));
+    // The paper's values with the decimals it printed (per parameter, over its conditions).
+    std::array<int, pmsm_parameter_names.size()> paper_decimals{};
+    for (const auto& p : problems)
+        if (p.published != nullptr)
+            for (const auto& entry : p.published->identification)
+                for (std::size_t j = 0; j < paper_decimals.size(); ++j)
+                    paper_decimals[j] = std::max(paper_decimals[j], printed_decimals(entry.identified[j]));
     for (const auto& p : problems) {
         if (p.published == nullptr)
             continue;
@@ -283,15 +400,15 @@ Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& 
                 }
                 const double m = mean(v);
                 const double truth = first.true_parameters[k];
-                row.push_back(text_cell(value_and_error(m, 100.0 * std::fabs(m - truth) / truth)));
+                row.push_back(value_and_error(m, 100.0 * std::fabs(m - truth) / truth, {4, -1}, 0));
             }
             t.add_row(std::move(row));
             if (const auto* published = published_identification(p, a)) {
                 std::vector<TableCell> paper_row = {text_cell(condition), text_cell(index.label(a)),
                                                     text_cell("paper")};
                 for (std::size_t j = 0; j < pmsm_parameter_names.size(); ++j)
-                    paper_row.push_back(
-                        text_cell(value_and_error(published->identified[j], published->error_pct[j])));
+                    paper_row.push_back(value_and_error(published->identified[j], published->error_pct[j],
+                                                        {1, paper_decimals[j]}, 1));
                 t.add_row(std::move(paper_row));
             }
         }
@@ -300,6 +417,15 @@ Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& 
         "Identified value / |error| against the true value, this study (mean over runs) beside the paper's "
         "Table 4 (" +
         std::string(paper_citation) + ")" + paper_rows_note + ".";
+    t.latex_column(0).fold_constant = true;
+    t.latex_column(0).heading = true; // several conditions: each heads its rows
+    t.latex_column(1).key = true;
+    t.latex_column(2).key = true;
+    for (std::size_t j = 0; j < pmsm_parameter_names.size(); ++j)
+        t.latex_column(3 + j).header = parameter_latex(std::string(pmsm_parameter_names[j]));
+    // The error on a line of its own under the value keeps the four parameters side by side.
+    t.latex_spread_below = true;
+    format_columns(t);
     return t;
 }
 

@@ -10,7 +10,9 @@
 #include "results/csv.hpp"
 #include "results/curve_data.hpp"
 #include "results/factorial_effects.hpp"
+#include "results/html_report.hpp"
 #include "results/ioh_export.hpp"
+#include "results/latex_document.hpp"
 #include "results/paper_tables.hpp"
 #include "results/study_index.hpp"
 #include "results/table.hpp"
@@ -43,15 +45,6 @@ void check_options(const ReportOptions& options) {
                                         "' is not one of md, tex, csv");
     if (options.errors == nullptr)
         throw std::logic_error("ReportOptions::errors is null");
-}
-
-std::string latex_document(const std::vector<Table>& tables) {
-    std::string out = "% All tables of the report; compiles with pdflatex (article + booktabs).\n"
-                      "\\documentclass{article}\n\\usepackage{booktabs}\n"
-                      "\\begin{document}\n";
-    for (const auto& t : tables)
-        out += render_latex(t) + "\n";
-    return out + "\\end{document}\n";
 }
 
 std::vector<std::string> non_empty_lines(const std::string& text) {
@@ -87,7 +80,10 @@ constexpr int plot_exit_interrupted = 130;
 
 enum class Figures { drawn_or_skipped, interrupted };
 
-Figures draw_figures(const ReportOptions& options, const fs::path& out_dir, std::ostream& console) {
+// `note` gets what the HTML page must say about the figures (skipped, failed), empty when all went well.
+Figures draw_figures(const ReportOptions& options, const fs::path& out_dir, std::ostream& console,
+                     std::string& note) {
+    note.clear();
     if (options.stop != nullptr && options.stop->load())
         return Figures::interrupted;
     const std::string how =
@@ -97,6 +93,7 @@ Figures draw_figures(const ReportOptions& options, const fs::path& out_dir, std:
     if (options.plot_script.empty() || !fs::exists(options.plot_script)) {
         console << "figures skipped: the plotting script " << options.plot_script.string()
                 << " was not found; the tables and curve data are written\n";
+        note = "figures skipped: the plotting script " + options.plot_script.string() + " was not found";
         return Figures::drawn_or_skipped;
     }
     bool interrupted = false;
@@ -105,6 +102,7 @@ Figures draw_figures(const ReportOptions& options, const fs::path& out_dir, std:
         return Figures::interrupted;
     if (!python) {
         console << "figures skipped: no Python with matplotlib found; " << how << '\n';
+        note = "figures skipped: no Python with matplotlib found; " + how;
         return Figures::drawn_or_skipped;
     }
     // The script's output is collected, not passed through: its notes (what a figure left out) go to
@@ -136,10 +134,15 @@ Figures draw_figures(const ReportOptions& options, const fs::path& out_dir, std:
                      ")";
         errors << "figures failed: " << reason << " (full output: " << log_file.string()
                << "); the tables and curve data are written\n";
+        note = "figures failed: " + reason + " (full output: figures/plot_study.log)";
         return Figures::drawn_or_skipped;
     }
-    for (const auto& line : non_empty_lines(run.err)) // the script's one line per figure that failed
+    const auto failures = non_empty_lines(run.err);
+    for (const auto& line : failures) // the script's one line per figure that failed
         errors << "figures: " << line << '\n';
+    if (!failures.empty())
+        note = "some figures could not be drawn (" + failures.front() + (failures.size() > 1 ? ", ..." : "") +
+               ")";
     console << "figures: " << figures.string() << '\n';
     return Figures::drawn_or_skipped;
 }
@@ -223,10 +226,11 @@ void make_report_directory(const fs::path& dir) {
 
 // Everything of one budget in `dir`: tables, curve data, effects, IOH export, and the figures
 // unless `figures` is false. Returns the tables (for the combined report.md and report.tex); sets
-// `figures` to false when they were interrupted.
+// `figures` to false when they were interrupted. `html` gets the budget's section of index.html.
 std::vector<Table> write_budget_report(const StudyData& study, const std::string& budget, const fs::path& dir,
                                        const std::string& heading, const ReportOptions& options,
-                                       std::ostream& console, std::string& all_markdown, bool& figures) {
+                                       std::ostream& console, std::string& all_markdown, bool& figures,
+                                       HtmlBudgetSection& html) {
     make_report_directory(dir);
     const StudyIndex index(study, budget);
     ComparisonOptions comparison;
@@ -302,17 +306,29 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
                 << " files, load the folder in IOHanalyzer): " << (dir / "ioh").string() << '\n';
     else
         console << "IOHprofiler export: no run has a finite value to export\n";
-    if (ioh.runs_left_out > 0 || ioh.points_left_out > 0) {
-        console << "IOHprofiler export: left out";
-        if (ioh.runs_left_out > 0)
-            console << ' ' << count(ioh.runs_left_out, "run") << " that ended at +inf";
-        if (ioh.points_left_out > 0)
-            console << (ioh.runs_left_out > 0 ? " and " : " ") << count(ioh.points_left_out, "infinite value")
-                    << " of other runs";
-        console << " (the format has no inf)\n";
-    }
-    if (figures && draw_figures(options, dir, console) == Figures::interrupted)
+    if (ioh.runs_left_out > 0)
+        console << "IOHprofiler export: left out " << count(ioh.runs_left_out, "run")
+                << " that ended at +inf (no improvement to log, as IOHexperimenter would log none)\n";
+    if (ioh.none_values > 0)
+        console << "IOHprofiler export: " << count(ioh.none_values, "infinite value")
+                << " written None, as IOHexperimenter writes them\n";
+    if (ioh.approximate_runs > 0)
+        console << "IOHprofiler export: " << count(ioh.approximate_runs, "run")
+                << " stored before mhbench recorded improvements: rows where the trace recorded them, not at "
+                   "each improvement (approximate; run the study again with --overwrite for exact rows)\n";
+    html.budget = budget;
+    html.directory = dir;
+    html.tables = tables;
+    html.figures_current = figures;
+    if (figures && draw_figures(options, dir, console, html.figures_note) == Figures::interrupted)
         figures = false;
+    if (!figures) {
+        html.figures_current = false;
+        html.figures_note = options.figures
+                                ? "the figures were interrupted; run mhbench report on the study to "
+                                  "draw them"
+                                : "the figures were not drawn (--no-figures)";
+    }
     return tables;
 }
 
@@ -341,13 +357,14 @@ ReportOutcome build_report(const StudyData& study, const ReportOptions& options,
                                "\n\nStudy context (context.ini):\n\n```\n" + study.context_text +
                                (study.context_text.empty() || study.context_text.back() == '\n' ? "" : "\n") +
                                "```\n\n";
-    std::vector<Table> tables;
+    std::vector<LatexSection> latex; // report.tex: a section per budget when there are several
     // Interrupted figures end the figures, not the report: the tables of every budget are still
     // written (they take little time), so that only the figures are left for `mhbench report`.
     bool figures = options.figures;
+    std::vector<HtmlBudgetSection> html; // the sections of index.html, one per budget
     if (budgets.size() == 1) {
-        tables = write_budget_report(study, budgets.front(), out_dir, heading, options, console, all_markdown,
-                                     figures);
+        latex.push_back({"", write_budget_report(study, budgets.front(), out_dir, heading, options, console,
+                                                 all_markdown, figures, html.emplace_back())});
     } else {
         // Several budgets: one complete report per budget in <out>/<budget slug>/, the combined
         // report.md / report.tex and budgets.csv (budget,directory) on top.
@@ -357,10 +374,13 @@ ReportOutcome build_report(const StudyData& study, const ReportOptions& options,
             index_csv += csv_field(budget) + ',' + csv_field(slug) + '\n';
             all_markdown += "## Budget " + (budget.empty() ? std::string("unspecified") : budget) + " (" +
                             slug + "/)\n\n";
+            html.emplace_back().folder = slug;
+            LatexSection& section = latex.emplace_back();
+            section.heading = "Budget " + (budget.empty() ? std::string("unspecified") : budget);
             for (auto& t : write_budget_report(study, budget, out_dir / slug, "budget " + budget + ": ",
-                                               options, console, all_markdown, figures)) {
+                                               options, console, all_markdown, figures, html.back())) {
                 t.id = slug + "_" + t.id; // one LaTeX label per table in the combined report.tex
-                tables.push_back(std::move(t));
+                section.tables.push_back(std::move(t));
             }
         }
         write_file_atomically(out_dir / "budgets.csv", index_csv);
@@ -368,8 +388,14 @@ ReportOutcome build_report(const StudyData& study, const ReportOptions& options,
     if (options.formats.count("md"))
         write_file_atomically(out_dir / "report.md", all_markdown);
     if (options.formats.count("tex"))
-        write_file_atomically(out_dir / "report.tex", latex_document(tables));
+        write_file_atomically(out_dir / "report.tex",
+                              latex_document(study.directory.string(), study.context_text, latex));
     ReportOutcome outcome;
+    // The page is rebuilt by every report, from the tables above and whatever figures/*.svg hold.
+    outcome.html = write_html_report(
+        out_dir, {study.directory.string(), study.context_text, study.study_text, std::move(html)});
+    console << "HTML report (one self-contained page): " << outcome.html.string() << "\n  "
+            << file_url(outcome.html) << '\n';
     outcome.interrupted = options.figures && !figures;
     if (outcome.interrupted) {
         std::string again = "mhbench report " + shell_quote(study.directory.string());

@@ -2,8 +2,9 @@
 // report directory the tables (Markdown, LaTeX, CSV; the paper's Tables 2-4 for PMSM problems, the
 // statistics tables for any problem, the effects of each component for variants forming a 2^k
 // on/off design), the curve data (CSV) and, when a Python with matplotlib is found, the figures
-// (figures/*.pdf and *.png, drawn by scripts/plot_study.py from the curve data), and the runs in
-// the IOHprofiler format (ioh/, for IOHanalyzer).
+// (figures/*.pdf, *.png and *.svg, drawn by scripts/plot_study.py from the curve data), the runs in
+// the IOHprofiler format (ioh/, for IOHanalyzer), and index.html, one self-contained page with
+// every table and figure (a section per budget when there are several).
 // A study with several budgets gets all of that once per budget, in <report>/<budget slug>/ (see
 // budget_slug), with budgets.csv, report.md and report.tex on top; a study with one budget keeps
 // the flat layout. Prints the Markdown tables to the console. The runner calls it at the end of
@@ -55,6 +56,8 @@ struct ReportOutcome {
     // after it are not (or only some), and `mhbench report` draws them. `errors` got one line:
     // "figures interrupted; run `mhbench report DIR` to draw them".
     bool interrupted = false;
+    // index.html: every table and figure on one self-contained page (results/html_report.hpp).
+    std::filesystem::path html;
 };
 
 // Checks the options (std::invalid_argument naming the option), then writes the report.

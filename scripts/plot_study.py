@@ -5,8 +5,9 @@ Usage: plot_study.py REPORT_DIR
 
 Reads REPORT_DIR/curves_iteration.csv, curves_evaluations.csv, parameters_iteration.csv,
 final_values.csv, target_hits.csv, critical_difference.csv, effects.csv and effect_means.csv
-(written by `mhbench report`) and writes PDF and PNG files to REPORT_DIR/figures/. Algorithms are
-named by their labels (the `label` column). A study with several budgets has one report folder per
+(written by `mhbench report`) and writes PDF, PNG and SVG files to REPORT_DIR/figures/ (the SVG
+files are inlined in the report's index.html). Algorithms are named by their labels (the `label`
+column). A study with several budgets has one report folder per
 budget, listed in REPORT_DIR/budgets.csv: each is drawn into its own figures/ folder, and every
 title names its budget (budget.txt of the folder).
   convergence_iteration_<problem>   median best-so-far vs iteration, IQR band, log y (the paper's Fig. 5
@@ -91,6 +92,11 @@ def import_matplotlib():
         import matplotlib
 
         matplotlib.use("Agg")
+        # SVG for the HTML report (index.html inlines them): text as text, not glyph outlines (files
+        # several times smaller, and searchable), and ids from a fixed salt, so that the same figure
+        # gives the same bytes.
+        matplotlib.rcParams["svg.fonttype"] = "none"
+        matplotlib.rcParams["svg.hashsalt"] = "mhbench"
         import matplotlib.pyplot as pyplot
     except Exception as error:  # noqa: BLE001 - any import failure means no figures, said in one line
         sys.stderr.write("cannot import matplotlib: %s: %s\n"
@@ -167,13 +173,15 @@ def temporary_name(out_dir, file_name):
 
 
 def save(fig, out_dir, name):
-    """Writes NAME.pdf and NAME.png whole or not at all: under a temporary name, then renamed."""
-    for ext in ("pdf", "png"):
+    """Writes NAME.pdf, NAME.png and NAME.svg whole or not at all: under a temporary name, then renamed."""
+    for ext in ("pdf", "png", "svg"):
         check_stop()
         final = os.path.join(out_dir, name + "." + ext)
         temporary = temporary_name(out_dir, name + "." + ext)
+        # The SVG's <title> names the figure; no date, so that a figure redrawn is the same file.
+        metadata = {"Title": name, "Date": None} if ext == "svg" else None
         try:
-            fig.savefig(temporary, format=ext, dpi=150, bbox_inches="tight")
+            fig.savefig(temporary, format=ext, dpi=150, bbox_inches="tight", metadata=metadata)
             os.replace(temporary, final)
         finally:
             if os.path.exists(temporary):

@@ -3,7 +3,9 @@
 # Every dependency comes from Debian: nothing is downloaded at build time.
 # Optional groups are named as arguments: `setup-debian.sh fuzz` adds clang and libFuzzer,
 # `setup-debian.sh mpi` Open MPI (the MHB_WITH_MPI build, scripts/mpi.sh), `setup-debian.sh ccache`
-# the compiler cache CI shares between its release and MPI builds.
+# the compiler cache CI shares between its release and MPI builds, `setup-debian.sh browser` Chromium
+# (report/index.html checked in a headless browser: scripts/browser-check.sh), `setup-debian.sh tex`
+# pdflatex with latex-base and latex-recommended (report.tex compiled: scripts/latex-check.sh).
 set -euo pipefail
 
 packages=(
@@ -21,14 +23,18 @@ packages=(
 optional_fuzz=(clang libclang-rt-dev)    # scripts/fuzz.sh: clang with libFuzzer and its sanitizers
 optional_mpi=(libopenmpi-dev openmpi-bin) # scripts/mpi.sh: Open MPI for `mpirun -np N mhbench run`
 optional_ccache=(ccache)                 # .ci/run: the MPI build reuses the release build's objects
+optional_browser=(chromium)              # scripts/browser-check.sh: the HTML report in headless Chromium
+optional_tex=(texlive-latex-base texlive-latex-recommended lmodern) # scripts/latex-check.sh: pdflatex
 
 for group in "$@"; do
     case "$group" in
     fuzz) packages+=("${optional_fuzz[@]}") ;;
     mpi) packages+=("${optional_mpi[@]}") ;;
     ccache) packages+=("${optional_ccache[@]}") ;;
+    browser) packages+=("${optional_browser[@]}") ;;
+    tex) packages+=("${optional_tex[@]}") ;;
     *)
-        echo "mhbench set-up: unknown optional group '$group' (known: fuzz, mpi, ccache)" >&2
+        echo "mhbench set-up: unknown optional group '$group' (known: fuzz, mpi, ccache, browser, tex)" >&2
         exit 2
         ;;
     esac
