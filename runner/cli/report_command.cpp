@@ -1,10 +1,15 @@
 // `mhbench report DIR`: rebuilds every table, the curve data and the figures of a finished study
 // from its directory alone. Thin: parses the command line, loads the study, calls build_report.
 #include <boost/program_options.hpp>
+#include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include "results/html_report.hpp"
 #include "results/report.hpp"
 #include "results/store.hpp"
 #include "runner/cli/command.hpp"
@@ -13,6 +18,57 @@
 namespace mhb::cli {
 
 namespace po = boost::program_options;
+
+namespace {
+
+// `program` as found in PATH, or empty.
+std::filesystem::path find_in_path(const std::string& program) {
+    const char* path = std::getenv("PATH");
+    std::stringstream dirs(path != nullptr ? path : "");
+    std::error_code ec;
+    for (std::string dir; std::getline(dirs, dir, ':');) {
+        const std::filesystem::path candidate = std::filesystem::path(dir.empty() ? "." : dir) / program;
+        if (std::filesystem::is_regular_file(candidate, ec) && ::access(candidate.c_str(), X_OK) == 0)
+            return candidate;
+    }
+    return {};
+}
+
+// --open: the page in the desktop's browser, when there is a desktop. Never an error: without a
+// display or xdg-open the path printed above is all the user needs. xdg-open runs detached (its
+// own session, output discarded, not waited for), so a browser that stays open does not keep
+// `mhbench report` waiting, and a browser's complaints do not mix with the report.
+void open_in_browser(const std::filesystem::path& page) {
+    const bool display = std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr;
+    const std::filesystem::path opener = display ? find_in_path("xdg-open") : std::filesystem::path();
+    if (opener.empty()) {
+        std::cout << "--open: "
+                  << (display ? "xdg-open not found" : "no display (DISPLAY and WAYLAND_DISPLAY unset)")
+                  << "; open " << file_url(page) << " in a browser\n";
+        return;
+    }
+    const std::string url = file_url(page); // before fork: the child only makes system calls
+    std::cout << "--open: opening " << url << " with xdg-open\n";
+    std::cout.flush();
+    const pid_t child = ::fork();
+    if (child == 0) { // a grandchild runs xdg-open, so that nobody has to wait for it
+        ::setsid();
+        if (::fork() == 0) {
+            const int null = ::open("/dev/null", O_RDWR);
+            if (null >= 0) {
+                ::dup2(null, 0);
+                ::dup2(null, 1);
+                ::dup2(null, 2);
+            }
+            ::execl(opener.c_str(), "xdg-open", url.c_str(), static_cast<char*>(nullptr));
+        }
+        ::_exit(0);
+    }
+    if (child > 0)
+        ::waitpid(child, nullptr, 0);
+}
+
+} // namespace
 
 int run_report_command(const std::vector<std::string>& args) {
     std::string study_dir;
@@ -26,11 +82,17 @@ int run_report_command(const std::vector<std::string>& args) {
         "  - for PMSM problems, the paper's tables (Li, Wang, Ji 2017, ITLBO): Table 2 (fitness mean/std\n"
         "    beside the published values, evaluations spent, gap to the least-squares optimum f*),\n"
         "    Table 3 (identified parameters, % errors, the least-squares theta*) and Table 4 (conditions);\n"
-        "  - for every problem: summary statistics, ERT, values at 1/10/100% of the budget; Wilcoxon\n"
-        "    rank-sum tests against a reference with Holm correction and Vargha-Delaney A12; the\n"
-        "    problems-by-algorithms table with +/=/- markers; Friedman ranks and Wilcoxon signed-rank\n"
-        "    across problems;\n"
-        "  - curve data (CSV) and figures (PDF/PNG, needs matplotlib: apt install python3-matplotlib).\n"
+        "  - for every problem: summary statistics, ERT, medians at 1/10/100% of one evaluation count\n"
+        "    per problem (the same for every algorithm); Wilcoxon rank-sum (and, for paired runs,\n"
+        "    signed-rank) tests against a reference with Holm correction and Vargha-Delaney A12; the\n"
+        "    problems-by-algorithms table of medians (IQR) with the tests' +/=/- markers and w/t/l\n"
+        "    counts; Friedman ranks and Wilcoxon signed-rank across problems;\n"
+        "  - each table as Markdown, CSV and LaTeX (laid out to fit a journal's page; report.tex holds\n"
+        "    them all and compiles with pdflatex and TeX Live's latex-base and latex-recommended);\n"
+        "  - curve data (CSV) and figures (PDF/PNG/SVG, needs matplotlib: apt install python3-matplotlib);\n"
+        "  - index.html: one self-contained page (no network, no other file) with the study's context,\n"
+        "    every table (sortable by a click on a header) and every figure (inline SVG), a section per\n"
+        "    budget when there are several; rebuilt by every report. Its path is printed at the end.\n"
         "The Markdown tables are also printed here.\n\nOptions");
     visible.add_options()("help,h", "this text")("out", po::value(&out_dir),
                                                  "report directory (default: DIR/report)")(
@@ -38,7 +100,9 @@ int run_report_command(const std::vector<std::string>& args) {
         "algorithm the tests compare against: a full spec or a name of the study (default: itlbo, else the "
         "first algorithm)")("alpha", po::value(&alpha)->default_value(0.05, "0.05"),
                             "significance level of the +/=/- markers, in (0, 1)")(
-        "no-figures", "write tables and curve data only")(
+        "no-figures", "write tables and curve data only (index.html says so; it shows figures an earlier "
+                      "report drew, marked as such)")(
+        "open", "print index.html's path and open it in a browser (xdg-open) when a display is available")(
         "format", po::value(&formats)->default_value(formats), "table formats to write: any of md,tex,csv");
     po::options_description hidden;
     hidden.add_options()("study", po::value(&study_dir));
@@ -85,6 +149,8 @@ int run_report_command(const std::vector<std::string>& args) {
         throw;
     }
     std::cout << printed.str();
+    if (vm.count("open") != 0)
+        open_in_browser(outcome.html);
     // Ctrl-C during the figures: the tables are written, build_report said so in one line on stderr.
     return outcome.interrupted ? exit_interrupted : exit_ok;
 }
