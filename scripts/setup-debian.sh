@@ -16,6 +16,7 @@ packages=(
     libboost-dev                         # Boost.Math: distributions and p-values
     libboost-program-options-dev         # the CLI and study files
     libssl-dev                           # OpenSSL libcrypto: SHA-256 of data files and run identities
+    libarchive-dev                       # libarchive: the embedded CEC 2017/2022 data (tar.xz)
     libgtest-dev libgmock-dev            # GoogleTest
     libbenchmark-dev                     # Google Benchmark
     python3-matplotlib                   # figures (Debian's /usr/bin/python3)
