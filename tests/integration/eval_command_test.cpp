@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <map>
 #include <sstream>
 
 #include "problems/parameters.hpp"
@@ -99,6 +100,37 @@ TEST(EvalCommand, MatchesCocoReferenceValues) {
     ASSERT_EQ(got.size(), 3u);
     for (std::size_t i = 0; i < 3; ++i)
         EXPECT_NEAR(got[i], expected[i], 1e-9 * std::fabs(expected[i]));
+}
+
+TEST(EvalCommand, MatchesTheOfficialCecCodeOnThePublicSample) {
+    // tests/data/cec/cec_public_sample.csv (suite,function,dim,point_id,f,x), computed with the
+    // official CEC 2017/2022 C code: every (suite, function, dim) in it, to 1e-10 relative.
+    std::ifstream csv(std::string(MHB_TEST_DATA_DIR) + "/cec/cec_public_sample.csv");
+    std::string line;
+    std::getline(csv, line);                                                       // header
+    std::map<std::string, std::pair<std::string, std::vector<double>>> by_problem; // spec -> points, f
+    while (std::getline(csv, line)) {
+        std::vector<std::string> fields;
+        std::istringstream row(line);
+        std::string field;
+        while (std::getline(row, field, ','))
+            fields.push_back(field);
+        ASSERT_EQ(fields.size(), 6u) << line;
+        auto& [points, expected] = by_problem[fields[0] + ":f=" + fields[1] + ",dim=" + fields[2]];
+        points += fields[5] + "\n";
+        expected.push_back(std::stod(fields[4]));
+    }
+    ASSERT_EQ(by_problem.size(), 4u);
+    for (const auto& [spec, sample] : by_problem) {
+        const auto file = temp_file("cec.txt", sample.first);
+        const Result r = run("eval --problem " + spec + " --points " + file.string());
+        ASSERT_EQ(r.status, 0) << spec << ": " << r.out;
+        const auto got = parse_lines(r.out);
+        ASSERT_EQ(got.size(), sample.second.size()) << spec;
+        for (std::size_t i = 0; i < got.size(); ++i)
+            EXPECT_NEAR(got[i], sample.second[i], 1e-10 * std::fabs(sample.second[i]))
+                << spec << " point " << i;
+    }
 }
 
 TEST(EvalCommand, BadInputNamesFileLineAndColumn) {
