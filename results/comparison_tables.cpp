@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "results/evaluation_counts.hpp"
 #include "results/hypothesis_tests.hpp"
 #include "results/statistics.hpp"
 
@@ -18,52 +19,6 @@ TableCell empty_cell() {
 
 std::string alpha_text(double alpha) {
     return format_number(alpha, 3);
-}
-
-// Best-so-far of a run after `at` evaluations: its final value if it stopped by then, else the
-// last recorded point with evaluations <= at (its exact improvements where recorded, else its
-// iteration curve and checkpoints); NaN if none is.
-double value_at_evaluations(const RunRecord& r, std::int64_t at) {
-    if (r.evaluations <= at)
-        return r.best_f;
-    double value = NAN;
-    if (r.improvements) {
-        for (const auto& p : r.improvements->points)
-            if (p.evaluations <= at)
-                value = p.best_f;
-        return value;
-    }
-    std::int64_t best_evaluations = -1;
-    const auto consider = [&](std::int64_t evaluations, double f) {
-        if (evaluations <= at && evaluations >= best_evaluations) {
-            best_evaluations = evaluations;
-            value = f;
-        }
-    };
-    for (const auto& p : r.curve)
-        consider(p.evaluations, p.best_f);
-    for (const auto& c : r.checkpoints)
-        consider(c.evaluations, c.best_f);
-    return value;
-}
-
-// The evaluation count E the budget columns take fractions of, for one problem: the study's
-// evaluation budget ("evaluations=N" in the runs' budget) when it has one, else the largest
-// evaluation count any run on the problem spent. One E per problem, so that every algorithm is
-// measured at the same counts.
-std::int64_t budget_evaluations(const StudyIndex& index, const std::string& problem) {
-    const SpecText budget = split_spec_text("budget:" + index.budget());
-    if (const auto e = spec_number(budget, "evaluations"); e && *e >= 1)
-        return static_cast<std::int64_t>(*e);
-    std::int64_t most = 0;
-    for (const auto& a : index.algorithms_on(problem))
-        for (const auto* r : index.find(problem, a)->runs)
-            most = std::max(most, r->evaluations);
-    return most;
-}
-
-std::int64_t evaluations_at(double fraction, std::int64_t budget) {
-    return static_cast<std::int64_t>(std::floor(fraction * static_cast<double>(budget) + 1e-9));
 }
 
 // "+", "=" and "-" counted: the wins, ties and losses of one algorithm against the reference.

@@ -1,9 +1,13 @@
 #include "results/report.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <sys/wait.h>
 
+#include "results/cec_protocol.hpp"
+#include "results/cec_result_files.hpp"
+#include "results/cec_tables.hpp"
 #include "results/child_process.hpp"
 #include "results/comparison_tables.hpp"
 #include "results/critical_difference.hpp"
@@ -159,7 +163,8 @@ namespace {
 // The tables of one budget, titled and captioned with it when it is known.
 std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOptions& comparison,
                                  const std::vector<DesignEffects>& designs,
-                                 const std::vector<DesignCandidate>& rejected, bool list_algorithms) {
+                                 const std::vector<DesignCandidate>& rejected, bool list_algorithms,
+                                 const CecProtocol* protocol) {
     std::vector<Table> tables;
     if (list_algorithms) {
         Table t;
@@ -177,6 +182,9 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
         tables.push_back(std::move(t));
     for (auto& t : comparison_tables(index, comparison))
         tables.push_back(std::move(t));
+    if (protocol != nullptr) // the competition's tables, per dimension
+        for (auto& t : cec_tables(index, *protocol, comparison.reference, comparison.alpha))
+            tables.push_back(std::move(t));
     if (auto effects = effects_table(designs, rejected, comparison.alpha))
         tables.push_back(std::move(*effects));
     if (!index.budget().empty())
@@ -273,10 +281,17 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
         console << "factorial design " << d.design.description() << ": effects in effects.csv\n";
     for (const auto& r : rejected)
         console << "no factorial analysis of " << r.name << ": " << r.why_not << '\n';
+    // A study that follows a CEC protocol (`protocol = cec2017` in study.ini) gets its tables and the
+    // organisers' result files.
+    const std::optional<std::string> protocol_name = study_protocol(study.study_text);
+    const CecProtocol* protocol = protocol_name ? find_cec_protocol(*protocol_name) : nullptr;
+    if (protocol_name && protocol == nullptr)
+        console << "protocol '" << *protocol_name << "' is not one this mhbench knows ("
+                << cec_protocol_names() << "): its tables and result files are not written\n";
     console << '\n';
 
     const std::vector<Table> tables =
-        budget_tables(index, comparison, designs, rejected, !study.algorithms.empty());
+        budget_tables(index, comparison, designs, rejected, !study.algorithms.empty(), protocol);
     write_tables(tables, dir, options, console, all_markdown);
 
     std::error_code ec;
@@ -299,6 +314,16 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
     if (designs.empty()) // no effects table: stale copies from an earlier report would mislead
         for (const char* ext : {".md", ".tex", ".csv"})
             fs::remove(dir / (std::string("effects") + ext), ec);
+    if (protocol != nullptr) {
+        const CecFilesSummary cec = write_cec_result_files(index, *protocol, dir / "cec");
+        console << protocol->title << " result files (" << cec.files
+                << ", the organisers' layout; see README there): " << (dir / "cec").string() << '\n';
+        if (cec.failed_runs > 0)
+            console << protocol->title << " result files: " << count(cec.failed_runs, "failed run")
+                    << " left out\n";
+    } else if (fs::exists(dir / "cec" / "README")) {
+        fs::remove_all(dir / "cec", ec); // from a report of the study when it followed a protocol
+    }
     const IohExportSummary ioh = write_ioh_export(index, dir / "ioh");
     console << "tables and curve data: " << dir.string() << '\n';
     if (ioh.files > 0)

@@ -59,9 +59,10 @@ StudyEstimate estimate_study(const PreparedStudy& study, std::size_t problems_pe
     }
     estimate.budgets.resize(budgets);
     for (std::size_t b = 0; b < budgets; ++b) {
-        const Budget& budget = study.study.budgets[b];
+        const StudyBudget& budget = study.study.budgets[b];
         BudgetEstimate& out = estimate.budgets[b];
-        out.exact = budget.max_evaluations && !budget.max_iterations && !budget.target_error;
+        out.exact = (budget.max_evaluations || budget.evaluations_by_dimension) && !budget.max_iterations &&
+                    !budget.target_error;
         for (std::size_t a = 0; a < algorithms; ++a) {
             double evaluations = 0; // per run, averaged over the sampled problems
             double seconds = 0;
@@ -75,13 +76,20 @@ StudyEstimate estimate_study(const PreparedStudy& study, std::size_t problems_pe
                 ++estimate.calibration_runs;
                 if (!record.ok || record.evaluations <= 0)
                     continue;
-                const double full = extrapolated_evaluations(record, budget);
+                const double full = extrapolated_evaluations(record, request.budget); // at its dimension
                 evaluations += full;
                 seconds += full * wall.count() / static_cast<double>(record.evaluations);
             }
             const double share = static_cast<double>(problems) / static_cast<double>(sample.size());
             out.evaluations += evaluations * share * runs;
             out.cpu_seconds += seconds * share * runs;
+        }
+        if (out.exact) { // every run spends its budget: the count, not a sample's
+            out.evaluations = 0;
+            for (const auto& problem : study.problems)
+                out.evaluations +=
+                    static_cast<double>(*budget.for_dimension(problem->dimension()).max_evaluations) *
+                    static_cast<double>(algorithms) * runs;
         }
     }
     return estimate;

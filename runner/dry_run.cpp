@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <set>
 #include <sstream>
 
+#include "results/cec_protocol.hpp"
 #include "results/store.hpp"
 #include "runner/calibration.hpp"
 
@@ -47,8 +49,24 @@ std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::p
     for (std::size_t b = 0; b < s.budgets.size(); ++b) {
         const auto& e = estimate.budgets[b];
         out << "  " << prepared.budget_texts[b] << ": " << (e.exact ? "" : "about ")
-            << count_text(e.evaluations) << " evaluations\n";
+            << count_text(e.evaluations) << " evaluations";
+        if (s.budgets[b].evaluations_by_dimension) { // what a run gets at each dimension of the study
+            std::set<std::int64_t> dimensions;
+            for (const auto& problem : prepared.problems)
+                dimensions.insert(problem->dimension());
+            out << " (per run:";
+            for (const std::int64_t d : dimensions)
+                out << (d == *dimensions.begin() ? " " : ", ")
+                    << count_text(static_cast<double>(*s.budgets[b].for_dimension(d).max_evaluations))
+                    << " at D = " << d;
+            out << ")";
+        }
+        out << '\n';
     }
+    if (const CecProtocol* protocol = find_cec_protocol(s.protocol))
+        out << "\nprotocol: " << s.protocol << " (" << protocol->title
+            << "): the report adds the competition's tables per dimension and the organisers' result files "
+               "(report/cec/)\n";
     const double seconds = estimate.cpu_seconds() / std::max(threads, 1);
     char line[160];
     std::snprintf(line, sizeof line, "%s evaluations, roughly %.3g s on %d thread%s",

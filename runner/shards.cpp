@@ -44,9 +44,9 @@ std::vector<double> estimated_run_costs(const PreparedStudy& study) {
     // once per dimension on the first problem that has it (a deterministic run).
     std::map<std::tuple<std::size_t, std::size_t, Eigen::Index>, double> evaluations;
     for (std::size_t b = 0; b < study.study.budgets.size(); ++b) {
-        const Budget& budget = study.study.budgets[b];
         for (std::size_t p = 0; p < problems; ++p) {
             const Eigen::Index dimension = study.problems[p]->dimension();
+            const Budget budget = study.study.budgets[b].for_dimension(dimension);
             for (std::size_t a = 0; a < algorithms; ++a) {
                 const auto first = static_cast<std::int64_t>((b * problems + p) * algorithms + a) * runs;
                 const auto key = std::make_tuple(b, a, dimension);

@@ -6,12 +6,14 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include "problems/parameters.hpp"
 #include "problems/rng.hpp"
 #include "problems/spec.hpp"
 #include "problems/spec_grid.hpp"
+#include "results/cec_protocol.hpp"
 
 namespace mhb {
 namespace {
@@ -28,8 +30,8 @@ void add_lines(std::vector<std::string>& errors, const std::string& origin, cons
     }
 }
 
-void check_budget(const Budget& budget, std::vector<std::string>& errors) {
-    if (!budget.max_evaluations && !budget.max_iterations)
+void check_budget(const StudyBudget& budget, std::vector<std::string>& errors) {
+    if (!budget.max_evaluations && !budget.max_iterations && !budget.evaluations_by_dimension)
         errors.emplace_back("budget: give a number of iterations or of evaluations (or both)");
     if (budget.max_iterations && *budget.max_iterations <= 0)
         errors.push_back("budget: iterations = " + std::to_string(*budget.max_iterations) +
@@ -241,42 +243,126 @@ void prepare_problems(const Study& study, const ProblemRegistry& registry, Prepa
     }
 }
 
+// Evaluations by dimension must list every problem's dimension: said once per budget and dimension.
+void check_dimension_budgets(const PreparedStudy& prepared, std::vector<std::string>& errors) {
+    for (const StudyBudget& budget : prepared.study.budgets) {
+        if (!budget.evaluations_by_dimension)
+            continue;
+        std::map<std::int64_t, std::pair<std::string, std::size_t>> missing; // D -> first problem, count
+        std::set<std::int64_t> too_many; // N x D beyond the most a budget may give, said once per D
+        for (std::size_t p = 0; p < prepared.problems.size(); ++p) {
+            const std::int64_t dimension = prepared.problems[p]->dimension();
+            try {
+                if (budget.evaluations_by_dimension->at(dimension))
+                    continue;
+            } catch (const std::invalid_argument& e) {
+                if (too_many.insert(dimension).second)
+                    errors.emplace_back(e.what());
+                continue;
+            }
+            auto& [first, count] = missing[dimension];
+            if (count++ == 0)
+                first = prepared.problem_specs[p];
+        }
+        for (const auto& [dimension, first_and_count] : missing)
+            errors.push_back("budget '" + budget_text(budget) + "' gives no evaluations at dimension " +
+                             std::to_string(dimension) + " (problem '" + first_and_count.first + "'" +
+                             (first_and_count.second > 1
+                                  ? " and " + std::to_string(first_and_count.second - 1) + " more"
+                                  : std::string()) +
+                             "); it lists " + budget.evaluations_by_dimension->dimensions_text());
+    }
+}
+
+// A protocol names its suite and records errors at fractions of the evaluation budget.
+void check_protocol(const PreparedStudy& prepared, std::vector<std::string>& errors) {
+    const std::string& name = prepared.study.protocol;
+    if (name.empty())
+        return;
+    const CecProtocol* protocol = find_cec_protocol(name);
+    if (protocol == nullptr) {
+        errors.push_back("protocol = " + name + " is not one of " + cec_protocol_names());
+        return;
+    }
+    std::size_t others = 0;
+    std::string first;
+    for (const auto& problem : prepared.problem_specs)
+        if (Spec::parse(problem).name != protocol->family && others++ == 0)
+            first = problem;
+    if (others > 0)
+        errors.push_back("protocol " + name + ": " +
+                         (others > 1
+                              ? "problems '" + first + "' and " + std::to_string(others - 1) + " more are"
+                              : "problem '" + first + "' is") +
+                         " not of the " + std::string(protocol->family) +
+                         " suite; the protocol's tables and result files cover its functions only (write " +
+                         std::string(protocol->family) + ":f=...,dim=...)");
+    for (const StudyBudget& budget : prepared.study.budgets)
+        if (!budget.max_evaluations && !budget.evaluations_by_dimension)
+            errors.push_back("protocol " + name + ": budget '" + budget_text(budget) +
+                             "' gives no evaluation count; the protocol records errors at fractions of it "
+                             "(write evaluations=" +
+                             std::string(protocol->evaluations) + ")");
+}
+
 } // namespace
 
 std::string_view seed_mode_name(SeedMode mode) {
     return mode == SeedMode::common ? "common" : "per-algorithm";
 }
 
-std::string budget_text(const Budget& budget) {
+std::string budget_text(const StudyBudget& budget) {
     std::string out;
     const auto add = [&out](const std::string& item) { out += (out.empty() ? "" : ",") + item; };
     if (budget.max_iterations)
         add("iterations=" + std::to_string(*budget.max_iterations));
     if (budget.max_evaluations)
         add("evaluations=" + std::to_string(*budget.max_evaluations));
+    else if (budget.evaluations_by_dimension)
+        add("evaluations=" + budget.evaluations_by_dimension->text());
     if (budget.target_error)
         add("target=" + format_real(*budget.target_error));
     return out;
 }
 
-Budget parse_budget(std::string_view text) {
+StudyBudget parse_budget(std::string_view text) {
     static const std::vector<ParameterInfo> declared = {
         ParameterInfo::integer("iterations", 1, 1, 1000000000000000LL, "iterations after initialisation"),
         ParameterInfo::integer("evaluations", 1, 1, 1000000000000000LL, "function evaluations"),
         ParameterInfo::real("target", 0.0, 0.0, std::numeric_limits<double>::infinity(),
                             "stop once f - f* <= target")};
-    const Spec spec = Spec::parse("budget:" + std::string(text));
+    Spec spec = Spec::parse("budget:" + std::string(text));
+    StudyBudget budget;
+    // Evaluations that depend on the dimension are read here; a plain count keeps the checks and
+    // messages of any integer parameter.
+    if (const std::string* evaluations = spec.find("evaluations");
+        evaluations != nullptr && DimensionEvaluations::written_in(*evaluations)) {
+        budget.evaluations_by_dimension = DimensionEvaluations::parse(*evaluations);
+        std::erase_if(spec.parameters, [](const auto& kv) { return kv.first == "evaluations"; });
+    }
     const ParameterValues values = validate_parameters("budget", declared, spec);
-    Budget budget;
     if (values.given("iterations"))
         budget.max_iterations = values.integer("iterations");
     if (values.given("evaluations"))
         budget.max_evaluations = values.integer("evaluations");
     if (values.given("target"))
         budget.target_error = values.real("target");
-    if (!budget.max_iterations && !budget.max_evaluations)
+    if (!budget.max_iterations && !budget.max_evaluations && !budget.evaluations_by_dimension)
         throw std::invalid_argument("budget '" + std::string(text) +
                                     "': give iterations=N and/or evaluations=N (target=E is optional)");
+    return budget;
+}
+
+Budget StudyBudget::for_dimension(std::int64_t dimension) const {
+    Budget budget = *this;
+    if (evaluations_by_dimension) {
+        const auto evaluations = evaluations_by_dimension->at(dimension);
+        if (!evaluations)
+            throw std::invalid_argument("budget '" + budget_text(*this) +
+                                        "' gives no evaluations at dimension " + std::to_string(dimension) +
+                                        "; it lists " + evaluations_by_dimension->dimensions_text());
+        budget.max_evaluations = *evaluations;
+    }
     return budget;
 }
 
@@ -314,7 +400,7 @@ RunRequest PreparedStudy::request(std::int64_t run_id) const {
     r.seed = study.seeds == SeedMode::common
                  ? derive_seed(study.seed, problem_identities[p], index)
                  : derive_seed(study.seed, algorithm_specs[a], problem_identities[p], index);
-    r.budget = study.budgets[c.budget];
+    r.budget = study.budgets[c.budget].for_dimension(problems[p]->dimension());
     r.budget_text = budget_texts[c.budget];
     return r;
 }
@@ -337,7 +423,7 @@ PreparedStudy prepare_study(const Study& study, const AlgorithmRegistry& algorit
                          std::to_string(max_runs_per_pair) + "]");
     if (study.budgets.empty())
         errors.emplace_back("budget: give a number of iterations or of evaluations (or both)");
-    for (const Budget& budget : study.budgets) {
+    for (const StudyBudget& budget : study.budgets) {
         check_budget(budget, errors);
         const std::string text = budget_text(budget);
         if (std::find(prepared.budget_texts.begin(), prepared.budget_texts.end(), text) !=
@@ -345,6 +431,8 @@ PreparedStudy prepare_study(const Study& study, const AlgorithmRegistry& algorit
             errors.push_back("budget '" + text + "' is listed twice");
         prepared.budget_texts.push_back(text);
     }
+    check_dimension_budgets(prepared, errors);
+    check_protocol(prepared, errors);
     // A target needs f*; said once per problem, however many budgets set one.
     if (std::any_of(study.budgets.begin(), study.budgets.end(),
                     [](const Budget& b) { return b.target_error; }))

@@ -73,6 +73,8 @@ std::string study_ini(const Study& study) {
     text += "seeds = " + std::string(seed_mode_name(study.seeds)) + '\n';
     for (const auto& b : study.budgets)
         text += "budget = " + budget_text(b) + '\n';
+    if (!study.protocol.empty()) // only then: the study.ini of every other study is as it was
+        text += "protocol = " + study.protocol + '\n';
     return text;
 }
 

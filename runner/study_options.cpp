@@ -8,6 +8,7 @@
 #include "problems/parameters.hpp"
 #include "problems/spec_grid.hpp"
 #include "problems/text_excerpt.hpp"
+#include "results/cec_protocol.hpp"
 
 namespace mhb {
 namespace po = boost::program_options;
@@ -35,14 +36,20 @@ po::options_description study_options() {
          "budget: iterations per run after the initialisation (iteration 0). A study needs a budget "
          "(--iterations, --evaluations or --budget); a preset brings its own")
         ("evaluations", po::value<std::string>(),
-         "budget: function evaluations per run (1e5 is accepted); with --iterations, whichever is spent "
-         "first ends the run. Replaces a preset's budgets")
+         "budget: function evaluations per run (1e5 is accepted), or by the problem's dimension D: "
+         "10000*dim (10000 x D) or dim10:200000+dim20:1000000 (a count per D listed; others are refused); "
+         "with --iterations, whichever is spent first ends the run. Replaces a preset's budgets")
         ("budget", po::value<specs>()->multitoken()->composing(),
-         "one budget as iterations=N,evaluations=N,target=E (any of them); repeat it to make the budget a "
-         "factor of the study: --budget iterations=150 --budget evaluations=15050, each reported separately")
+         "one budget as iterations=N,evaluations=N,target=E (any of them; evaluations as for --evaluations); "
+         "repeat it to make the budget a factor of the study: --budget iterations=150 --budget "
+         "evaluations=15050, each reported separately")
         ("budgets", po::value<specs>()->multitoken()->composing(), "same as --budget")
         ("target", po::value<std::string>(),
-         "also stop a run once best f - f* <= this (problems with a known optimum); applies to every budget");
+         "also stop a run once best f - f* <= this (problems with a known optimum); applies to every budget")
+        ("protocol", po::value<std::string>(),
+         "follow a CEC competition protocol: cec2017 or cec2022 (none: no protocol). The report adds the "
+         "competition's tables per dimension and the organisers' result files (report/cec/); the problems "
+         "must be of that suite and the budget give evaluations. The presets cec2017 and cec2022 set it");
     // clang-format on
     return d;
 }
@@ -101,7 +108,22 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
     } else if (key == "iterations") {
         iterations_ = read_integer(1000000000000000LL);
     } else if (key == "evaluations") {
-        evaluations_ = read_integer(1000000000000000LL);
+        if (DimensionEvaluations::written_in(value)) {
+            try {
+                evaluations_by_dimension_ = DimensionEvaluations::parse(value);
+            } catch (const std::invalid_argument& e) {
+                errors.push_back(prefix + e.what());
+            }
+        } else {
+            evaluations_ = read_integer(1000000000000000LL);
+        }
+    } else if (key == "protocol") {
+        if (value == "none")
+            study_.protocol.clear();
+        else if (find_cec_protocol(value) != nullptr)
+            study_.protocol = value;
+        else
+            fail("is not one of {" + cec_protocol_names() + ", none}");
     } else if (key == "budget" || key == "budgets") {
         for (const auto& text : split_spec_list(value)) {
             try {
@@ -127,18 +149,19 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
 }
 
 void StudyOptionReader::finish(std::vector<std::string>&) {
-    std::vector<Budget> budgets;
-    if (iterations_ || evaluations_) {
-        Budget b;
+    std::vector<StudyBudget> budgets;
+    if (iterations_ || evaluations_ || evaluations_by_dimension_) {
+        StudyBudget b;
         b.max_iterations = iterations_;
         b.max_evaluations = evaluations_;
+        b.evaluations_by_dimension = evaluations_by_dimension_;
         budgets.push_back(b);
     }
     budgets.insert(budgets.end(), budgets_.begin(), budgets_.end());
     const bool budget_given =
         seen_.count("iterations") != 0 || seen_.count("evaluations") != 0 || !budgets_.empty();
     if (budget_given)
-        study_.budgets = budgets.empty() ? std::vector<Budget>{Budget{}} : budgets;
+        study_.budgets = budgets.empty() ? std::vector<StudyBudget>{StudyBudget{}} : budgets;
     if (target_)
         for (auto& b : study_.budgets)
             b.target_error = target_;

@@ -15,7 +15,7 @@
 namespace mhb {
 
 // algorithms/algorithm, problems/problem, runs, seed, seeds, iterations, evaluations, target,
-// budget/budgets, with their help texts.
+// budget/budgets, protocol, with their help texts.
 boost::program_options::options_description study_options();
 
 // Applies the study options of one source — the command line, or one study file — on top of a
@@ -39,8 +39,9 @@ private:
     std::set<std::string> seen_;
     std::optional<std::int64_t> iterations_;
     std::optional<std::int64_t> evaluations_;
+    std::optional<DimensionEvaluations> evaluations_by_dimension_;
     std::optional<double> target_;
-    std::vector<Budget> budgets_;
+    std::vector<StudyBudget> budgets_;
 };
 
 } // namespace mhb

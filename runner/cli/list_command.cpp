@@ -74,6 +74,8 @@ void print_studies(std::ostream& out) {
             << ", budgets:";
         for (const auto& b : p.study.budgets)
             out << ' ' << budget_text(b);
+        if (!p.study.protocol.empty())
+            out << "\n      protocol: " << p.study.protocol << " (the competition's tables and result files)";
         out << "\n      file: " << p.origin;
         out << "\n\n";
     }

@@ -135,6 +135,8 @@ void print_help(const po::options_description& options) {
         << "\nExamples:\n"
            "  mhbench run --study paper\n"
            "  mhbench run --study ablation --dry-run\n"
+           "  mhbench run --study cec2017-smoke      # the CEC 2017 protocol, small\n"
+           "  mhbench run --study cec2017 --problems \"cec2017:f={1,3-30},dim={10,30}\"\n"
            "  mhbench run --study paper --evaluations 37500 --out studies/paper-equal-evals\n"
            "  mhbench run --algorithms \"itlbo:tutorial={on,off},obl={on,off} tlbo\" \\\n"
            "              --problems sphere:dim=10 --budget iterations=200 --budget evaluations=2e4 \\\n"

@@ -85,6 +85,18 @@ std::vector<BadInput> catalogue() {
          says({"mhbench run: study: runs = 0 is outside [1, 1000000]"})},
         {"", "run --algorithms random-search --problems sphere --evaluations 1e300 --out s", 2,
          says({"mhbench run: evaluations = 1e300 is too large (at most 1000000000000000)"})},
+        {"", "run --algorithms random-search --problems sphere --evaluations '10000*D' --out s", 2,
+         says({"mhbench run: budget: parameter 'evaluations' = 10000*D multiplies by 'D', not by dim; write a "
+               "count N, N*dim (N x the problem's dimension) or dimD:N+dimD:N+... (N at each dimension D "
+               "listed), e.g. 10000*dim or dim10:200000+dim20:1000000"})},
+        {"", "run --algorithms random-search --problems sphere:dim=2 --budget evaluations=dim10:100 --out s", 2,
+         says({"mhbench run: budget 'evaluations=dim10:100' gives no evaluations at dimension 2 (problem "
+               "'sphere:dim=2'); it lists 10"})},
+        {"", "run --algorithms random-search" + tiny_run + " --protocol cec2017", 2,
+         says({"mhbench run: protocol cec2017: problem 'sphere:dim=2' is not of the cec2017 suite; the protocol's "
+               "tables and result files cover its functions only (write cec2017:f=...,dim=...)"})},
+        {"", "run --algorithms random-search" + tiny_run + " --protocol cec2030", 2,
+         says({"mhbench run: protocol = cec2030 is not one of {cec2017, cec2022, none}"})},
         {"", "run --algorithms random-search --problems sphere --runs 1e300 --iterations 5 --out s", 2,
          says({"mhbench run: runs = 1e300 is too large (at most 1000000)"})},
         {"", "run --algorithms random-search --problems sphere --iterations lots --out s", 2,
