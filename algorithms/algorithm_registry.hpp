@@ -2,7 +2,7 @@
 #pragma once
 
 #include "algorithms/optimizer.hpp"
-#include "problems/registry.hpp"
+#include "problems/core/registry.hpp"
 
 namespace mhb {
 

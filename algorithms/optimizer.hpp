@@ -6,8 +6,8 @@
 
 #include <string>
 
+#include "problems/core/rng.hpp"
 #include "problems/objective.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb {
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "algorithms/sampling.hpp"
+#include "problems/core/rng.hpp"
 #include "problems/objective.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb {
 

@@ -3,8 +3,8 @@
 
 #include <Eigen/Core>
 
+#include "problems/core/rng.hpp"
 #include "problems/problem.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb {
 

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
 
 namespace mhb {
 

@@ -1,8 +1,8 @@
 // The registry of problem families and the built-in registrations.
 #pragma once
 
+#include "problems/core/registry.hpp"
 #include "problems/problem.hpp"
-#include "problems/registry.hpp"
 
 namespace mhb {
 

@@ -2,7 +2,7 @@
 
 #include <exception>
 
-#include "problems/rng.hpp"
+#include "problems/core/rng.hpp"
 
 namespace mhb {
 namespace {

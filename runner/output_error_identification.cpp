@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "algorithms/algorithm_registry.hpp"
-#include "problems/rng.hpp"
-#include "problems/spec.hpp"
+#include "problems/core/rng.hpp"
+#include "problems/core/spec.hpp"
 #include "runner/execute_run.hpp"
 #include "runner/study.hpp"
 

@@ -5,8 +5,8 @@
 #include <istream>
 #include <stdexcept>
 
-#include "problems/parameters.hpp"
-#include "problems/text_excerpt.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/text_excerpt.hpp"
 
 namespace mhb {
 

@@ -3,7 +3,7 @@
 #include <map>
 #include <sstream>
 
-#include "problems/sha256.hpp"
+#include "problems/core/sha256.hpp"
 
 namespace mhb {
 namespace {

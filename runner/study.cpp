@@ -9,10 +9,10 @@
 #include <set>
 #include <stdexcept>
 
-#include "problems/parameters.hpp"
-#include "problems/rng.hpp"
-#include "problems/spec.hpp"
-#include "problems/spec_grid.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/rng.hpp"
+#include "problems/core/spec.hpp"
+#include "problems/core/spec_grid.hpp"
 #include "results/cec_protocol.hpp"
 
 namespace mhb {

@@ -7,8 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "problems/parameters.hpp"
-#include "problems/text_excerpt.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/text_excerpt.hpp"
 #include "runner/study_options.hpp"
 
 namespace mhb {

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
-#include "problems/parameters.hpp"
-#include "problems/spec_grid.hpp"
-#include "problems/text_excerpt.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/spec_grid.hpp"
+#include "problems/core/text_excerpt.hpp"
 #include "results/cec_protocol.hpp"
 
 namespace mhb {

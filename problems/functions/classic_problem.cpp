@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "problems/core/parameters.hpp"
 #include "problems/functions/classic_function.hpp"
 #include "problems/functions/instance_transform.hpp"
-#include "problems/parameters.hpp"
 #include "problems/problem_registry.hpp"
 
 namespace mhb {

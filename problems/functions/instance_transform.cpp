@@ -4,7 +4,7 @@
 #include <bit>
 #include <string>
 
-#include "problems/rng.hpp"
+#include "problems/core/rng.hpp"
 
 namespace mhb {
 

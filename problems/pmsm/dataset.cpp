@@ -1,6 +1,6 @@
 #include "problems/pmsm/dataset.hpp"
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
 
 namespace mhb::pmsm {
 

@@ -14,9 +14,9 @@
 #include <string_view>
 #include <vector>
 
-#include "problems/parameters.hpp"
-#include "problems/sha256.hpp"
-#include "problems/text_excerpt.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/sha256.hpp"
+#include "problems/core/text_excerpt.hpp"
 
 namespace mhb::pmsm {
 namespace {

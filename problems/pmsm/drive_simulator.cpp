@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "problems/parameters.hpp"
-#include "problems/rng.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/rng.hpp"
 
 namespace mhb::pmsm {
 

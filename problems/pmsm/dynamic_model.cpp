@@ -5,7 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
 #include "problems/pmsm/segments.hpp"
 
 namespace mhb::pmsm {

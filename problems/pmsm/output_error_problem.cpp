@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
 
 namespace mhb::pmsm {
 

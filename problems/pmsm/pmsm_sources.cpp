@@ -3,10 +3,10 @@
 #include <set>
 #include <stdexcept>
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/rng.hpp"
+#include "problems/core/text_excerpt.hpp"
 #include "problems/pmsm/dataset_csv.hpp"
-#include "problems/rng.hpp"
-#include "problems/text_excerpt.hpp"
 
 namespace mhb::pmsm {
 namespace {

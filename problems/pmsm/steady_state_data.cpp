@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
 #include "problems/pmsm/segments.hpp"
 
 namespace mhb::pmsm {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
 
 namespace mhb::pmsm {
 

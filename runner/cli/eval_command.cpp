@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"

@@ -20,14 +20,14 @@
 #include <string>
 #include <vector>
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/text_excerpt.hpp"
 #include "problems/pmsm/dynamic_model.hpp"
 #include "problems/pmsm/identifiability.hpp"
 #include "problems/pmsm/pmsm_sources.hpp"
 #include "problems/pmsm/segments.hpp"
 #include "problems/pmsm/steady_state_data.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/text_excerpt.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/output_error_identification.hpp"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "mhb_version.hpp"
-#include "problems/text_excerpt.hpp"
+#include "problems/core/text_excerpt.hpp"
 #include "runner/cli/command.hpp"
 
 namespace mhb::cli {

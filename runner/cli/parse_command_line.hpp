@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "problems/parameters.hpp"
-#include "problems/text_excerpt.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/text_excerpt.hpp"
 
 namespace mhb::cli {
 

@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "problems/parameters.hpp"
-#include "problems/spec.hpp"
-#include "problems/text_excerpt.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/spec.hpp"
+#include "problems/core/text_excerpt.hpp"
 #include "results/csv.hpp"
 #include "results/report.hpp"
 #include "results/store.hpp"

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/text_excerpt.hpp"
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/drive_simulator.hpp"
-#include "problems/text_excerpt.hpp"
 #include "results/csv.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"

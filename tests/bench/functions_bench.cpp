@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "problems/core/rng.hpp"
 #include "problems/functions/classic_function.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
 
 namespace {
 

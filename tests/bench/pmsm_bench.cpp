@@ -5,6 +5,7 @@
 // expansion) against the direct sum LinearModel::fitness, and the exact fit, against the number of rows.
 #include <benchmark/benchmark.h>
 
+#include "problems/core/rng.hpp"
 #include "problems/objective.hpp"
 #include "problems/pmsm/drive_simulator.hpp"
 #include "problems/pmsm/dynamic_model.hpp"
@@ -12,7 +13,6 @@
 #include "problems/pmsm/linear_model.hpp"
 #include "problems/pmsm/linear_model_problem.hpp"
 #include "problems/pmsm/steady_state_problem.hpp"
-#include "problems/rng.hpp"
 
 namespace {
 

@@ -3,9 +3,9 @@
 // per period (1, 2, 10) and parameters (4; 5 with the dead-time voltage, one hypot more per step).
 #include <benchmark/benchmark.h>
 
+#include "problems/core/rng.hpp"
 #include "problems/pmsm/drive_simulator.hpp"
 #include "problems/pmsm/output_error.hpp"
-#include "problems/rng.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Fuzzes the spec language (problems/spec.hpp, problems/spec_grid.hpp) and its validation against
+// Fuzzes the spec language (problems/core/spec.hpp, problems/core/spec_grid.hpp) and its validation against
 // the built-in registries: split_spec_list, expand_grid, Spec::parse, then Registry::minimal,
 // normalised and expand of each variant. Bad input must give std::invalid_argument, never a crash.
 #include <cstddef>
@@ -9,9 +9,9 @@
 #include <string_view>
 
 #include "algorithms/algorithm_registry.hpp"
+#include "problems/core/spec.hpp"
+#include "problems/core/spec_grid.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/spec.hpp"
-#include "problems/spec_grid.hpp"
 
 namespace {
 

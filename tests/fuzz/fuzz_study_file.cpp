@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "problems/spec.hpp"
-#include "problems/spec_grid.hpp"
+#include "problems/core/spec.hpp"
+#include "problems/core/spec_grid.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
 

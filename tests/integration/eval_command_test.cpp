@@ -9,9 +9,9 @@
 #include <map>
 #include <sstream>
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/rng.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb {
 namespace {

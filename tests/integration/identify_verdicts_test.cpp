@@ -6,8 +6,8 @@
 #include <string>
 
 #include "cli_harness.hpp"
+#include "problems/core/rng.hpp"
 #include "problems/pmsm/dataset_csv.hpp"
-#include "problems/rng.hpp"
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "algorithms/algorithm_registry.hpp"
+#include "problems/core/rng.hpp"
 #include "problems/problem.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb::test {
 

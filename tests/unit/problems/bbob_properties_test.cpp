@@ -8,8 +8,8 @@
 #include <thread>
 
 #include "problems/bbob/bbob_random.hpp"
+#include "problems/core/rng.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb {
 namespace {

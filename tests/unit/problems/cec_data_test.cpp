@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "problems/cec/cec_data.hpp"
-#include "problems/sha256.hpp"
+#include "problems/core/sha256.hpp"
 
 namespace mhb::cec {
 namespace {

@@ -7,8 +7,8 @@
 
 #include "problems/cec/cec_data.hpp"
 #include "problems/cec/cec_function.hpp"
+#include "problems/core/spec.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/spec.hpp"
 
 namespace mhb {
 namespace {

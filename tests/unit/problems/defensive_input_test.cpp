@@ -6,11 +6,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/text_excerpt.hpp"
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/least_squares.hpp"
 #include "problems/pmsm/steady_state_data.hpp"
-#include "problems/text_excerpt.hpp"
 
 namespace mhb {
 namespace {

@@ -6,10 +6,10 @@
 #include <thread>
 #include <vector>
 
+#include "problems/core/rng.hpp"
 #include "problems/functions/classic_function.hpp"
 #include "problems/functions/instance_transform.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb {
 namespace {

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "problems/core/rng.hpp"
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/dynamic_model.hpp"
 #include "problems/pmsm/linear_model.hpp"
 #include "problems/pmsm/segments.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb::pmsm {
 namespace {

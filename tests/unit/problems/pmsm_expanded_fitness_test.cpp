@@ -4,10 +4,10 @@
 #include <cmath>
 #include <gtest/gtest.h>
 
+#include "problems/core/rng.hpp"
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/steady_state_problem.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb::pmsm {
 namespace {

@@ -8,12 +8,12 @@
 #include <sstream>
 #include <string>
 
+#include "problems/core/rng.hpp"
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/drive_simulator.hpp"
 #include "problems/pmsm/least_squares.hpp"
 #include "problems/pmsm/steady_state_problem.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb::pmsm {
 namespace {

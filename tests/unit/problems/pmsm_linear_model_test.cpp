@@ -9,11 +9,11 @@
 #include <limits>
 #include <string>
 
+#include "problems/core/rng.hpp"
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/dynamic_model.hpp"
 #include "problems/pmsm/linear_model.hpp"
 #include "problems/pmsm/linear_model_problem.hpp"
-#include "problems/rng.hpp"
 
 namespace mhb::pmsm {
 namespace {

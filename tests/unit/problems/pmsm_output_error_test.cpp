@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "problems/core/rng.hpp"
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/drive_simulator.hpp"
 #include "problems/pmsm/output_error.hpp"
 #include "problems/pmsm/output_error_problem.hpp"
-#include "problems/rng.hpp"
 #include "results/csv.hpp"
 
 namespace mhb::pmsm {

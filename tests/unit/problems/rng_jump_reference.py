@@ -9,7 +9,7 @@ jumped state two ways and checks they agree:
   2. T^(2^128) by 128 squarings of the 256x256 matrix T over GF(2), built from next() itself,
      which needs no constant at all.
 Then it prints the first outputs after one and after two jumps from the state of Rng(seed)
-(SplitMix64 seeding as in problems/rng.cpp). Run: python3 rng_jump_reference.py (a few seconds).
+(SplitMix64 seeding as in problems/core/rng.cpp). Run: python3 rng_jump_reference.py (a few seconds).
 """
 
 M = (1 << 64) - 1

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <vector>
 
-#include "problems/rng.hpp"
+#include "problems/core/rng.hpp"
 
 namespace mhb {
 namespace {

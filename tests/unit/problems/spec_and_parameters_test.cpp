@@ -1,9 +1,9 @@
 // Specs (`name:key=value,...`), typed parameter validation and the registry's errors.
 #include <gtest/gtest.h>
 
+#include "problems/core/spec.hpp"
+#include "problems/core/spec_grid.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/spec.hpp"
-#include "problems/spec_grid.hpp"
 
 namespace mhb {
 namespace {

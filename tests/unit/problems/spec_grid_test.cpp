@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "algorithms/algorithm_registry.hpp"
+#include "problems/core/spec.hpp"
+#include "problems/core/spec_grid.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/spec.hpp"
-#include "problems/spec_grid.hpp"
 
 namespace mhb {
 namespace {

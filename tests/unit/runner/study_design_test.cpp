@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <set>
 
-#include "problems/rng.hpp"
+#include "problems/core/rng.hpp"
 #include "runner/calibration.hpp"
 #include "runner/execute_run.hpp"
 #include "runner/study.hpp"

@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "algorithms/algorithm_registry.hpp"
+#include "problems/core/rng.hpp"
 #include "problems/problem_registry.hpp"
-#include "problems/rng.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
 #include "runner/study_presets.hpp"

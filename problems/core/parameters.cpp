@@ -1,11 +1,11 @@
-#include "problems/parameters.hpp"
+#include "problems/core/parameters.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "problems/text_excerpt.hpp"
+#include "problems/core/text_excerpt.hpp"
 
 namespace mhb {
 

@@ -1,10 +1,10 @@
-#include "problems/spec_grid.hpp"
+#include "problems/core/spec_grid.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
-#include "problems/spec.hpp"
+#include "problems/core/spec.hpp"
 
 namespace mhb {
 namespace {

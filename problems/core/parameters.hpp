@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "problems/spec.hpp"
+#include "problems/core/spec.hpp"
 
 namespace mhb {
 

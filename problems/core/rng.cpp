@@ -1,4 +1,4 @@
-#include "problems/rng.hpp"
+#include "problems/core/rng.hpp"
 
 #include <cmath>
 

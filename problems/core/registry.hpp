@@ -11,9 +11,9 @@
 #include <string_view>
 #include <vector>
 
-#include "problems/parameters.hpp"
-#include "problems/spec.hpp"
-#include "problems/text_excerpt.hpp"
+#include "problems/core/parameters.hpp"
+#include "problems/core/spec.hpp"
+#include "problems/core/text_excerpt.hpp"
 
 namespace mhb {
 

@@ -1,4 +1,4 @@
-#include "problems/sha256.hpp"
+#include "problems/core/sha256.hpp"
 
 #include <array>
 #include <cerrno>

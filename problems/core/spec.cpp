@@ -1,9 +1,9 @@
-#include "problems/spec.hpp"
+#include "problems/core/spec.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "problems/text_excerpt.hpp"
+#include "problems/core/text_excerpt.hpp"
 
 namespace mhb {
 namespace {
