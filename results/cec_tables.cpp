@@ -16,11 +16,11 @@
 namespace mhb {
 namespace {
 
-// One algorithm on one function: its errors after MaxFES by run index, its trials as CEC 2022
-// ranks them, and its marker against the reference ("" for the reference and where no test ran).
+// One algorithm on one function: its runs, their errors after MaxFES, its trials as CEC 2022 ranks
+// them, and its marker against the reference ("" for the reference and where no test ran).
 struct Cell {
-    std::vector<double> errors;
-    std::vector<std::int64_t> run_indices;
+    const RunGroup* group = nullptr;
+    std::vector<double> errors; // in the order of group->runs
     std::vector<CecTrial> trials;
     std::string marker;
 };
@@ -42,24 +42,10 @@ std::string function_name(int number) {
     return std::string("F") + std::to_string(number);
 }
 
-TableCell marker_cell(const std::string& marker) {
-    TableCell cell = text_cell(marker);
-    if (!marker.empty())
-        cell.latex = "$" + marker + "$";
-    return cell;
-}
-
-std::string win_tie_loss(const std::vector<std::string>& markers) {
-    std::size_t counts[3] = {0, 0, 0};
-    for (const auto& m : markers)
-        ++counts[m == "+" ? 0 : (m == "=" ? 1 : 2)];
-    return std::to_string(counts[0]) + "/" + std::to_string(counts[1]) + "/" + std::to_string(counts[2]);
-}
-
 // The markers of every algorithm but the reference on one function, decided as the comparison
 // tables decide theirs, but on the errors (so that errors below 1e-8 tie at 0).
 void add_markers(std::map<std::string, Cell>& cells, const std::string& reference, bool paired,
-                 double alpha) {
+                 std::int64_t max_fes, double alpha) {
     const auto ref = cells.find(reference);
     if (ref == cells.end())
         return;
@@ -78,19 +64,12 @@ void add_markers(std::map<std::string, Cell>& cells, const std::string& referenc
             tests.push_back(rank_sum_test(cell.errors, y.errors));
             nonzero.push_back(0);
         } else {
-            std::vector<double> xs;
-            std::vector<double> ys;
-            for (std::size_t i = 0; i < cell.errors.size(); ++i) {
-                const auto at = std::find(y.run_indices.begin(), y.run_indices.end(), cell.run_indices[i]);
-                if (at == y.run_indices.end())
-                    continue;
-                xs.push_back(cell.errors[i]);
-                ys.push_back(y.errors[static_cast<std::size_t>(at - y.run_indices.begin())]);
-            }
+            const PairedValues pairs = paired_values(
+                *cell.group, *y.group, [max_fes](const RunRecord& r) { return cec_error_at(r, max_fes); });
             std::size_t differing = 0;
-            for (std::size_t i = 0; i < xs.size(); ++i)
-                differing += xs[i] != ys[i] ? 1U : 0U;
-            tests.push_back(xs.empty() ? TestResult{} : signed_rank_test(xs, ys));
+            for (std::size_t i = 0; i < pairs.x.size(); ++i)
+                differing += pairs.x[i] != pairs.y[i] ? 1U : 0U;
+            tests.push_back(pairs.x.empty() ? TestResult{} : signed_rank_test(pairs.x, pairs.y));
             nonzero.push_back(differing);
         }
         raw.push_back(tests.back().p_value);
@@ -110,16 +89,16 @@ std::vector<Dimension> by_dimension(const StudyIndex& index, const CecProtocol& 
         std::map<std::string, Cell> cells;
         for (const auto& a : index.algorithms_on(p.problem)) {
             Cell cell;
-            for (const auto* r : index.find(p.problem, a)->runs) {
+            cell.group = index.find(p.problem, a);
+            for (const auto* r : cell.group->runs) {
                 const double error = cec_error_at(*r, p.max_fes);
                 const std::int64_t termination = cec_termination_evaluations(*r, p.max_fes);
                 cell.errors.push_back(error);
-                cell.run_indices.push_back(r->run_index);
                 cell.trials.push_back({error == 0.0 || termination < p.max_fes, termination, error});
             }
             cells[a] = std::move(cell);
         }
-        add_markers(cells, reference, index.paired(p.problem), alpha);
+        add_markers(cells, reference, index.paired(p.problem), p.max_fes, alpha);
         out.back().functions.push_back(p);
         out.back().cells.push_back(std::move(cells));
     }

@@ -21,7 +21,8 @@ std::string alpha_text(double alpha) {
     return format_number(alpha, 3);
 }
 
-// "+", "=" and "-" counted: the wins, ties and losses of one algorithm against the reference.
+} // namespace
+
 std::string win_tie_loss(const std::vector<std::string>& markers) {
     std::size_t w = 0;
     std::size_t t = 0;
@@ -34,6 +35,15 @@ std::string win_tie_loss(const std::vector<std::string>& markers) {
     return std::to_string(w) + "/" + std::to_string(t) + "/" + std::to_string(l);
 }
 
+TableCell marker_cell(const std::string& marker) {
+    TableCell cell = text_cell(marker);
+    if (!marker.empty())
+        cell.latex = "$" + marker + "$";
+    return cell;
+}
+
+namespace {
+
 // A test's name as a cell; LaTeX says only its variant (the caption names the test): "exact" or
 // "normal approx." (with tie and continuity correction).
 TableCell test_cell(const TestResult& test) {
@@ -42,14 +52,6 @@ TableCell test_cell(const TestResult& test) {
     const std::string variant = comma == std::string::npos ? "" : test.name.substr(comma + 2);
     cell.latex =
         variant.empty() ? "---" : (variant.rfind("normal approx.", 0) == 0 ? "normal approx." : variant);
-    return cell;
-}
-
-// A +/=/- marker as a cell: text in Markdown and CSV, maths in LaTeX.
-TableCell marker_cell(const std::string& marker) {
-    TableCell cell = text_cell(marker);
-    if (!marker.empty())
-        cell.latex = "$" + marker + "$";
     return cell;
 }
 

@@ -46,6 +46,10 @@ std::string comparison_marker(double adjusted_p, double a12, double alpha);
 // algorithm's values tend lower; "-" above; "=" otherwise.
 std::string signed_rank_marker(double adjusted_p, const TestResult& signed_rank, std::size_t nonzero_pairs,
                                double alpha);
+// "+", "=" and "-" counted: "w/t/l", the wins, ties and losses of one algorithm against the reference.
+std::string win_tie_loss(const std::vector<std::string>& markers);
+// A +/=/- marker as a cell: text in Markdown and CSV, maths in LaTeX.
+TableCell marker_cell(const std::string& marker);
 
 // The blocks of the across-problem tests: the problems on which every algorithm has runs and, per
 // problem, each algorithm's median final value (columns in study order). Empty with fewer than

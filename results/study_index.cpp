@@ -75,14 +75,19 @@ const RunRecord* RunGroup::run_with_index(std::int64_t run_index) const {
     return it != runs.end() && (*it)->run_index == run_index ? *it : nullptr;
 }
 
-PairedValues paired_final_values(const RunGroup& x, const RunGroup& y) {
+PairedValues paired_values(const RunGroup& x, const RunGroup& y,
+                           const std::function<double(const RunRecord&)>& of) {
     PairedValues out;
     for (const auto* r : x.runs)
         if (const RunRecord* partner = y.run_with_index(r->run_index)) {
-            out.x.push_back(r->best_f);
-            out.y.push_back(partner->best_f);
+            out.x.push_back(of(*r));
+            out.y.push_back(of(*partner));
         }
     return out;
+}
+
+PairedValues paired_final_values(const RunGroup& x, const RunGroup& y) {
+    return paired_values(x, y, [](const RunRecord& r) { return r.best_f; });
 }
 
 StudyIndex::StudyIndex(const StudyData& data, const std::optional<std::string>& budget) {

@@ -8,6 +8,7 @@
 // one of them, since runs at different budgets are different experiments.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -45,12 +46,14 @@ struct RunGroup {
     [[nodiscard]] const RunRecord* run_with_index(std::int64_t run_index) const;
 };
 
-// The final values of two groups on the run indices where both have a successful run, in run-index
-// order: the pairs of a paired test.
+// A value `of` each run of two groups, on the run indices where both have a successful run, in
+// run-index order: the pairs of a paired test. paired_final_values pairs the final values.
 struct PairedValues {
     std::vector<double> x;
     std::vector<double> y;
 };
+PairedValues paired_values(const RunGroup& x, const RunGroup& y,
+                           const std::function<double(const RunRecord&)>& of);
 PairedValues paired_final_values(const RunGroup& x, const RunGroup& y);
 
 class StudyIndex;
