@@ -113,25 +113,9 @@ double cec_error_at(const RunRecord& run, std::int64_t evaluations) {
 std::int64_t cec_termination_evaluations(const RunRecord& run, std::int64_t max_fes) {
     if (!run.f_opt)
         return max_fes;
-    const auto reached = [&](double f) { return f - *run.f_opt < cec_error_threshold; };
-    if (run.improvements) {
-        for (const auto& p : run.improvements->points)
-            if (reached(p.best_f))
-                return p.evaluations;
-        return max_fes;
-    }
-    // Runs stored before improvements were recorded: the first recorded point that had reached it
-    // (no earlier than the improvement itself).
-    std::optional<std::int64_t> first;
-    for (const auto& p : run.curve)
-        if (reached(p.best_f) && (!first || p.evaluations < *first))
-            first = p.evaluations;
-    for (const auto& c : run.checkpoints)
-        if (reached(c.best_f) && (!first || c.evaluations < *first))
-            first = c.evaluations;
-    if (!first && reached(run.best_f))
-        first = run.evaluations;
-    return first.value_or(max_fes);
+    const double f_opt = *run.f_opt;
+    return first_evaluation_reaching(run, [f_opt](double f) { return f - f_opt < cec_error_threshold; })
+        .value_or(max_fes);
 }
 
 std::optional<CecFunction> cec_function(const std::string& problem, std::string_view family,

@@ -1,11 +1,12 @@
 #include "results/curve_data.hpp"
 
-#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <set>
 #include <utility>
 
 #include "results/csv.hpp"
+#include "results/evaluation_counts.hpp"
 #include "results/statistics.hpp"
 
 namespace mhb {
@@ -39,6 +40,29 @@ void sample_union(const std::vector<Steps>& runs,
     }
 }
 
+// A run's state at an iteration as every iteration file reads it: at the end of iteration k, or
+// at the run's end if that came first. So the states are the end of every iteration the run
+// completed, then, when it stopped inside an iteration (its budget or target reached there, or
+// inside its initialisation), its final state at that iteration; carried forward from there on,
+// a run that stopped counts with its final value at every later iteration.
+struct IterationState {
+    std::int64_t iteration = 0;
+    std::int64_t evaluations = 0;
+    double best_f = 0.0;
+    const std::vector<double>* best_x = nullptr;
+};
+
+std::vector<IterationState> iteration_states(const RunRecord& r) {
+    std::vector<IterationState> states;
+    for (const auto& p : r.curve)
+        states.push_back({p.iteration, p.evaluations, p.best_f, &p.best_x});
+    if (states.empty() || r.evaluations > states.back().evaluations) {
+        const std::int64_t stopped_in = states.empty() ? 0 : states.back().iteration + 1;
+        states.push_back({stopped_in, r.evaluations, r.best_f, &r.best_x});
+    }
+    return states;
+}
+
 std::string prefix(const StudyIndex& index, const RunGroup& g) {
     return csv_field(g.problem) + ',' + csv_field(g.algorithm) + ',' + csv_field(index.label(g.algorithm)) +
            ',';
@@ -60,9 +84,9 @@ std::string fitness_curves_by_iteration(const StudyIndex& index) {
         for (const auto* r : g.runs) {
             Steps f;
             Steps e;
-            for (const auto& p : r->curve) {
-                f.emplace_back(p.iteration, p.best_f);
-                e.emplace_back(p.iteration, static_cast<double>(p.evaluations));
+            for (const auto& state : iteration_states(*r)) {
+                f.emplace_back(state.iteration, state.best_f);
+                e.emplace_back(state.iteration, static_cast<double>(state.evaluations));
             }
             fitness.push_back(std::move(f));
             evaluations.push_back(std::move(e));
@@ -82,18 +106,23 @@ std::string fitness_curves_by_iteration(const StudyIndex& index) {
 
 std::string fitness_curves_by_evaluations(const StudyIndex& index) {
     std::string out = "problem,algorithm,label,evaluations,runs,mean,std,median,q25,q75\n";
+    std::vector<double> values;
     for (const auto& g : index.groups()) {
-        std::vector<Steps> runs;
-        for (const auto* r : g.runs) {
-            Steps s;
+        // The x-axis: every count of the shared grid a run of the group reached, and each run's last.
+        std::set<std::int64_t> keys;
+        for (const auto* r : g.runs)
             for (const auto& c : r->checkpoints)
-                s.emplace_back(c.evaluations, c.best_f);
-            runs.push_back(std::move(s));
+                keys.insert(c.evaluations);
+        for (const std::int64_t evaluations : keys) {
+            values.clear();
+            for (const auto* r : g.runs)
+                if (const double v = value_at_evaluations(*r, evaluations); !std::isnan(v))
+                    values.push_back(v);
+            if (values.empty())
+                continue;
+            out += prefix(index, g) + std::to_string(evaluations) + ',' + std::to_string(values.size()) +
+                   ',' + summary_columns(values) + '\n';
         }
-        sample_union(runs, [&](std::int64_t evaluations, const std::vector<double>& v) {
-            out += prefix(index, g) + std::to_string(evaluations) + ',' + std::to_string(v.size()) + ',' +
-                   summary_columns(v) + '\n';
-        });
     }
     return out;
 }
@@ -108,9 +137,9 @@ std::string parameter_curves_by_iteration(const StudyIndex& index) {
             std::vector<Steps> runs;
             for (const auto* r : g.runs) {
                 Steps s;
-                for (const auto& p : r->curve)
-                    if (k < p.best_x.size())
-                        s.emplace_back(p.iteration, p.best_x[k]);
+                for (const auto& state : iteration_states(*r))
+                    if (k < state.best_x->size())
+                        s.emplace_back(state.iteration, (*state.best_x)[k]);
                 runs.push_back(std::move(s));
             }
             const std::string truth =
@@ -148,22 +177,11 @@ std::string target_hits(const StudyIndex& index) {
         for (const auto* r : g.runs) {
             if (!r->f_opt)
                 continue;
-            Steps points;
-            for (const auto& p : r->curve)
-                points.emplace_back(p.evaluations, p.best_f);
-            for (const auto& c : r->checkpoints)
-                points.emplace_back(c.evaluations, c.best_f);
-            std::stable_sort(points.begin(), points.end(),
-                             [](const auto& a, const auto& b) { return a.first < b.first; });
+            const double f_opt = *r->f_opt;
             for (const double gap : ecdf_target_gaps()) {
-                std::string hit;
-                for (const auto& [evaluations, f] : points)
-                    if (f - *r->f_opt <= gap) {
-                        hit = std::to_string(evaluations);
-                        break;
-                    }
-                out += prefix(index, g) + std::to_string(r->run_index) + ',' + csv_number(gap) + ',' + hit +
-                       '\n';
+                const auto hit = first_evaluation_reaching(*r, [&](double f) { return f - f_opt <= gap; });
+                out += prefix(index, g) + std::to_string(r->run_index) + ',' + csv_number(gap) + ',' +
+                       (hit ? std::to_string(*hit) : "") + '\n';
             }
         }
     return out;
