@@ -68,6 +68,13 @@ std::string percent_text(double fraction) {
     return format_number(100.0 * fraction, 3) + "%";
 }
 
+// Every value of x and y is the same one (+inf included).
+bool all_equal(const std::vector<double>& x, const std::vector<double>& y) {
+    const double first = x.empty() ? (y.empty() ? 0.0 : y.front()) : x.front();
+    const auto same = [first](double v) { return v == first; };
+    return std::all_of(x.begin(), x.end(), same) && std::all_of(y.begin(), y.end(), same);
+}
+
 struct Comparison {
     std::string problem;
     std::string algorithm;
@@ -79,6 +86,10 @@ struct Comparison {
     TestResult paired_test; // signed-rank on the paired differences (algorithm - reference)
     double paired_adjusted_p = 1.0;
     std::string marker;
+    // Degenerate tests, which the tables report by convention (z = 0, p = 1, '=') where R's
+    // wilcox.test gives NaN: every value of both samples equal; every paired difference zero.
+    bool every_value_tied = false;
+    bool every_difference_zero = false;
 };
 
 std::vector<Comparison> compare_with_reference(const StudyIndex& index, const ComparisonOptions& options) {
@@ -98,6 +109,7 @@ std::vector<Comparison> compare_with_reference(const StudyIndex& index, const Co
             const auto y = reference->final_values();
             Comparison c{p,      a, rank_sum_test(x, y), 1.0, vargha_delaney_a12(x, y),
                          paired, 0, TestResult{},        1.0, ""};
+            c.every_value_tied = all_equal(x, y);
             std::size_t differing = 0;
             if (paired) {
                 const PairedValues pairs = paired_final_values(group, *reference);
@@ -106,6 +118,7 @@ std::vector<Comparison> compare_with_reference(const StudyIndex& index, const Co
                 for (std::size_t i = 0; i < pairs.x.size(); ++i)
                     differing += pairs.x[i] != pairs.y[i] ? 1U : 0U;
             }
+            c.every_difference_zero = paired && differing == 0;
             family.push_back(std::move(c));
             nonzero.push_back(differing);
         }
@@ -127,6 +140,26 @@ std::vector<Comparison> compare_with_reference(const StudyIndex& index, const Co
         }
     }
     return all;
+}
+
+// What a caption naming the tests must add when some were degenerate (empty when none was).
+std::string degenerate_tests_note(const std::vector<Comparison>& comparisons) {
+    std::size_t tied = 0;
+    std::size_t zero = 0;
+    for (const auto& c : comparisons) {
+        tied += c.every_value_tied ? 1U : 0U;
+        zero += c.every_difference_zero ? 1U : 0U;
+    }
+    std::string note;
+    if (tied > 0)
+        note += " In " + std::to_string(tied) + (tied == 1 ? " comparison" : " comparisons") +
+                " every value of both samples is the same: the rank-sum test has no variance there (R's "
+                "wilcox.test gives p = NaN); shown as z = 0, p = 1, =.";
+    if (zero > 0)
+        note += " In " + std::to_string(zero) + (zero == 1 ? " comparison" : " comparisons") +
+                " every paired difference is zero: the signed-rank test has nothing to rank (R gives V = 0, "
+                "p = NaN); shown as V = 0, p = 1, =.";
+    return note;
 }
 
 Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
@@ -237,7 +270,8 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
         "Success: the run reached the study's target (blank: no run on the problem reached one, or none was "
         "set); ERT = evaluations of all runs (to the target for successful ones) / successful runs, as COCO "
         "defines it. Budget columns: median over runs of the best-so-far value after that many evaluations, "
-        "a fraction of one evaluation count E per problem, the same for every algorithm: " +
+        "floor(fraction x E), rounded down, for one evaluation count E per problem, "
+        "the same for every algorithm: " +
         std::string(
             index.budget().find("evaluations=") != std::string::npos
                 ? "the study's evaluation budget"
@@ -375,7 +409,7 @@ Table tests_table(const StudyIndex& index, const std::vector<Comparison>& compar
                ". +: significantly better than the reference, -: significantly worse, =: no significant "
                "difference. Test variants: exact = the exact null distribution, normal approx. = the normal "
                "approximation with tie and continuity correction." +
-               wtl_note;
+               degenerate_tests_note(comparisons) + wtl_note;
     if (!untested.empty()) {
         caption += " Not tested (every run of the reference failed):";
         for (std::size_t i = 0; i < untested.size(); ++i)
@@ -496,8 +530,8 @@ Table generic_table(const StudyIndex& index, const std::vector<Comparison>& comp
                 "reference " +
                 index.label(options.reference) + ": " + tests +
                 ", Holm correction across each problem's comparisons, alpha = " + alpha_text(options.alpha) +
-                "; + better, - worse, = no significant difference." + (comparisons.empty() ? "" : wtl_note) +
-                left_out_notes(index);
+                "; + better, - worse, = no significant difference." + degenerate_tests_note(comparisons) +
+                (comparisons.empty() ? "" : wtl_note) + left_out_notes(index);
     // LaTeX: the IQR under the median keeps the columns narrow; the test is said once when it is the
     // same for every problem.
     t.latex_spread_below = true;
