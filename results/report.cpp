@@ -18,6 +18,7 @@
 #include "results/ioh_export.hpp"
 #include "results/latex_document.hpp"
 #include "results/paper_tables.hpp"
+#include "results/report_readme.hpp"
 #include "results/study_index.hpp"
 #include "results/table.hpp"
 
@@ -308,7 +309,8 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
     write_file_atomically(dir / "parameters_iteration.csv", parameter_curves_by_iteration(index));
     write_file_atomically(dir / "final_values.csv", final_values(index));
     write_file_atomically(dir / "target_hits.csv", target_hits(index));
-    write_or_remove(dir / "critical_difference.csv", critical_difference_data(index, options.alpha));
+    const std::optional<std::string> critical_difference = critical_difference_data(index, options.alpha);
+    write_or_remove(dir / "critical_difference.csv", critical_difference);
     write_or_remove(dir / "effect_means.csv",
                     designs.empty() ? std::nullopt : std::optional<std::string>(effect_means_csv(designs)));
     if (designs.empty()) // no effects table: stale copies from an earlier report would mislead
@@ -341,6 +343,14 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
         console << "IOHprofiler export: " << count(ioh.approximate_runs, "run")
                 << " stored before mhbench recorded improvements: rows where the trace recorded them, not at "
                    "each improvement (approximate; run the study again with --overwrite for exact rows)\n";
+    ReportFiles files;
+    files.formats.assign(options.formats.begin(), options.formats.end());
+    files.critical_difference = critical_difference.has_value();
+    files.effect_means = !designs.empty();
+    files.cec = protocol != nullptr;
+    files.ioh = ioh.files > 0;
+    files.budget_txt = !budget.empty();
+    files.combined = html.folder.empty(); // no folder of its own: this budget is the whole report
     html.budget = budget;
     html.directory = dir;
     html.tables = tables;
@@ -354,6 +364,8 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
                                   "draw them"
                                 : "the figures were not drawn (--no-figures)";
     }
+    files.figures = fs::exists(dir / "figures");
+    write_file_atomically(dir / "README.md", report_readme(tables, files));
     return tables;
 }
 
@@ -394,8 +406,9 @@ ReportOutcome build_report(const StudyData& study, const ReportOptions& options,
         // Several budgets: one complete report per budget in <out>/<budget slug>/, the combined
         // report.md / report.tex and budgets.csv (budget,directory) on top.
         std::string index_csv = "budget,directory\n";
+        std::vector<std::string> folders;
         for (const auto& budget : budgets) {
-            const std::string slug = budget_slug(budget);
+            const std::string slug = folders.emplace_back(budget_slug(budget));
             index_csv += csv_field(budget) + ',' + csv_field(slug) + '\n';
             all_markdown += "## Budget " + (budget.empty() ? std::string("unspecified") : budget) + " (" +
                             slug + "/)\n\n";
@@ -409,6 +422,7 @@ ReportOutcome build_report(const StudyData& study, const ReportOptions& options,
             }
         }
         write_file_atomically(out_dir / "budgets.csv", index_csv);
+        write_file_atomically(out_dir / "README.md", budgets_readme(budgets, folders));
     }
     if (options.formats.count("md"))
         write_file_atomically(out_dir / "report.md", all_markdown);
