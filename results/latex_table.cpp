@@ -20,8 +20,9 @@
 // same table number (\addtocounter{table}{-1}) and the caption with "(continued)". The height is
 // estimated like the width, from heights pdflatex measured, and each float must fit 96 % of the
 // smallest text height of the targets: 550 pt, a one-column article's (IEEEtran conference 672 pt,
-// elsarticle 5p 682 pt). The floats are as few as fit and evenly filled; they break between runs of
-// rows under one heading where that leaves a float at least half full, a float's first row is
+// elsarticle 5p 682 pt). The floats are as few as fit, as evenly filled as the breaks allow; they
+// break between runs of rows under one heading where that leaves a float at least half full
+// (else inside a run, at least two of its rows above the break), a float's first row is
 // headed (the heading repeats when a run continues), a heading never ends a float, and the w/t/l
 // rows go with the last. Floats, unlike a longtable, work in one- and two-column documents alike.
 // Numbers are maths padded to their column's widest tail (results/latex_numbers.hpp), so plain `r`
