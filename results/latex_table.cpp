@@ -613,9 +613,7 @@ std::string render_latex(const Table& table) {
                 heading && (r == 0 || table.rows[r][*heading].text != table.rows[r - 1][*heading].text));
         }
         heights.heading = heading ? heading_height : 0.0;
-        std::size_t footer_rows = 0;
-        for (const auto& row : footer)
-            footer_rows += footer_shown(row) ? 1 : 0;
+        const auto footer_rows = std::count_if(footer.begin(), footer.end(), footer_shown);
         if (footer_rows > 0) // a footer's label may head its row (below): counted as a heading
             heights.footer = footer_rule + static_cast<double>(footer_rows) *
                                                (label_kept || heading ? row_height : heading_height);
