@@ -64,27 +64,23 @@ std::string latex_document(const std::string& study_directory, const std::string
         "\\usepackage{lmodern}\n"
         "\\usepackage{booktabs}\n"
         "\\usepackage{array}\n"
-        "\\usepackage{longtable}\n"
         "\\usepackage{graphicx}\n"
         "% Tables follow one another with no text between: let a page hold several, and float pages\n"
-        "% fill up, so that they are placed near where they are listed.\n"
+        "% fill up, so that they are placed near where they are listed. A table taller than a page is\n"
+        "% several floats, which keep their order like any others.\n"
         "\\setcounter{topnumber}{4}\n\\setcounter{bottomnumber}{4}\n\\setcounter{totalnumber}{8}\n"
         "\\renewcommand{\\topfraction}{0.95}\n\\renewcommand{\\bottomfraction}{0.95}\n"
         "\\renewcommand{\\textfraction}{0.05}\n\\renewcommand{\\floatpagefraction}{0.6}\n"
-        "\\setlength{\\LTcapwidth}{\\textwidth}\n"
         "\\title{mhbench report:\\\\ \\texttt{" +
         breakable(study_directory) + "}}\n\\author{}\n\\date{" + breakable(date) + "}\n" +
         "\\begin{document}\n\\maketitle\n" + context_part;
     for (const auto& section : sections) {
         if (!section.heading.empty())
             out += "\\clearpage\n\\section{" + latex_escape(section.heading) + "}\n";
-        for (const auto& t : section.tables) {
-            const std::string latex = render_latex(t);
-            // A longtable is not a float: it would overtake the tables still waiting for a place.
-            if (latex.find("\\begin{longtable}") != std::string::npos)
-                out += "\n\\clearpage";
-            out.append("\n").append(latex);
-        }
+        // Every table is floats (a tall one several, its rows continued under the same number), so
+        // none overtakes another still waiting for a place, and no \clearpage is needed between them.
+        for (const auto& t : section.tables)
+            out.append("\n").append(render_latex(t));
     }
     return out + "\n\\end{document}\n";
 }

@@ -1,6 +1,6 @@
 // report.tex: every table of a report in one LaTeX document that pdflatex compiles with TeX Live's
 // latex-base and latex-recommended packages alone (T1 fonts, Latin Modern, booktabs, array,
-// longtable, graphicx): a title naming the study directory, the study's context, and a section per
+// graphicx): a title naming the study directory, the study's context, and a section per
 // budget when there are several. Each table also stands alone in its <id>.tex (results/table.hpp).
 #pragma once
 

@@ -14,9 +14,17 @@
 //     and budget columns, the tests' rank-sum and signed-rank parts); captions name the parts;
 //  4. only a single column too wide for the page on its own gets \resizebox.
 // A part up to 252 pt wide (one column of a two-column IEEE paper) is a `table`; a wider one is a
-// `table*`, which spans both columns of a two-column class and is a plain table in one column. A
-// table of more than 42 lines is a `longtable` (it breaks across pages; longtable works in
-// one-column documents only, which its comment says).
+// `table*`, which spans both columns of a two-column class and is a plain table in one column.
+// A part taller than a page is split by rows into consecutive floats of the same environment, each
+// with the column header: the first has the caption, the label and the notes; the others the
+// same table number (\addtocounter{table}{-1}) and the caption with "(continued)". The height is
+// estimated like the width, from heights pdflatex measured, and each float must fit 96 % of the
+// smallest text height of the targets: 550 pt, a one-column article's (IEEEtran conference 672 pt,
+// elsarticle 5p 682 pt). The floats are as few as fit, as evenly filled as the breaks allow; they
+// break between runs of rows under one heading where that leaves a float at least half full
+// (else inside a run, at least two of its rows above the break), a float's first row is
+// headed (the heading repeats when a run continues), a heading never ends a float, and the w/t/l
+// rows go with the last. Floats, unlike a longtable, work in one- and two-column documents alike.
 // Numbers are maths padded to their column's widest tail (results/latex_numbers.hpp), so plain `r`
 // columns line every decimal point up: siunitx is in Debian's texlive-science, which a reader (and
 // CI) may lack, and its S columns could not take our composite cells (median, IQR, marker).
@@ -42,10 +50,24 @@ constexpr double ieee_column = 252.0; // \columnwidth of a two-column IEEE paper
 constexpr double column_sep = 4.0;    // \tabcolsep of every table...
 constexpr double tight_sep = 3.0;     // ...but one that fits in one part with this and not with that
 constexpr double usable = 0.96 * page_width;
-constexpr double wrap_above = 120.0;        // a text column wider than this wraps
-constexpr double narrowest_wrap = 40.0;     // a spec or label: it breaks after ',' and ':'
-constexpr double narrowest_prose = 90.0;    // a sentence narrower than this reads badly
-constexpr std::size_t longtable_above = 42; // lines: what a page holds beside a caption and notes
+constexpr double wrap_above = 120.0;     // a text column wider than this wraps
+constexpr double narrowest_wrap = 40.0;  // a spec or label: it breaks after ',' and ':'
+constexpr double narrowest_prose = 90.0; // a sentence narrower than this reads badly
+// Heights, measured with pdflatex (tests/latex/ checks real reports against the page). The text
+// height of a one-column article, 10 pt, default geometry, is the smallest of the targets (IEEEtran
+// conference 672 pt, elsarticle 5p 682 pt); 96 % of it is used, as of the width.
+constexpr double page_height = 550.0;
+constexpr double usable_height = 0.96 * page_height;
+constexpr double row_height = 9.8;   // a \footnotesize row (9.75 pt; 9.79 with exponents and \boldmath)
+constexpr double rules_height = 8.6; // \toprule, \midrule and \bottomrule with their spacing
+constexpr double heading_height = row_height + 4.5; // a heading line and the \addlinespace above it
+constexpr double footer_rule = 7.0;                 // the \midrule above the w/t/l rows
+constexpr double caption_base = 23.0;               // IEEEtran's "TABLE I" line and the skips (article: 7 pt)
+constexpr double caption_line = 12.0;  // a line of caption (\normalsize in article; 9 pt in IEEEtran)
+constexpr double caption_scale = 1.25; // \normalsize against the \footnotesize widths are estimated at
+constexpr double notes_skip = 6.0;     // \medskip above the notes
+constexpr double notes_line = 9.5;     // a line of notes (\footnotesize)
+constexpr double ragged = 1.1;         // ragged-right lines end short of the width
 constexpr double space = 2.67;
 constexpr double marker_width = 6.61;
 
@@ -267,6 +289,78 @@ std::string join(const std::vector<std::string>& items, const std::string& separ
     return out;
 }
 
+// The rows of a table part and the room a float has for them, in pt.
+struct Heights {
+    std::vector<double> rows;      // each body row: a line, two with the spread below, more if wrapped
+    std::vector<bool> group_start; // a heading line goes above the row (a run of rows begins)
+    double heading = 0.0;          // a heading line, when the table has headings
+    double footer = 0.0;           // the w/t/l rows under the body, in the last float
+    double first_room = 0.0;       // a float with the caption, the header and the notes
+    double later_room = 0.0;       // a continued float: the caption and header, no notes
+};
+
+// Rows [first, second) of each float, each fitting its room at `scale`: runs of rows stay
+// together where the float would still be at least half full, a float's first row is headed (the
+// heading repeats when a run continues), a heading never ends a float (it goes with its first
+// row), and the footer goes with the last row.
+std::vector<std::pair<std::size_t, std::size_t>> pack_rows(const Heights& heights, double scale) {
+    const std::size_t n = heights.rows.size();
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    for (std::size_t start = 0; start < n;) {
+        const double room = scale * (out.empty() ? heights.first_room : heights.later_room);
+        double used = 0.0;
+        double used_at_boundary = 0.0;
+        std::size_t end = start;
+        std::size_t boundary = start; // the last end at which a run of rows ends
+        for (std::size_t r = start; r < n; ++r) {
+            double h = heights.rows[r] + (r == start || heights.group_start[r] ? heights.heading : 0.0);
+            if (r + 1 == n)
+                h += heights.footer;
+            if (r > start && used + h > room)
+                break;
+            used += h;
+            end = r + 1;
+            if (end == n || heights.group_start[end]) {
+                boundary = end;
+                used_at_boundary = used;
+            }
+        }
+        if (end < n && boundary > start) {
+            std::size_t run_begin = end - 1; // the run the float would end inside
+            while (run_begin > start && !heights.group_start[run_begin])
+                --run_begin;
+            // A run cut short leaves at least two rows above the cut.
+            if (used_at_boundary >= 0.5 * room || end - run_begin < 2)
+                end = boundary;
+        }
+        out.emplace_back(start, end);
+        start = end;
+    }
+    if (out.empty())
+        out.emplace_back(0, 0);
+    return out;
+}
+
+// As few floats as fit, as evenly filled as they can be: the smallest room that needs no more
+// floats than the full room does.
+std::vector<std::pair<std::size_t, std::size_t>> split_rows(const Heights& heights) {
+    auto best = pack_rows(heights, 1.0);
+    if (best.size() < 2)
+        return best;
+    double low = 0.0;
+    double high = 1.0;
+    for (int i = 0; i < 30; ++i) {
+        const double mid = (low + high) / 2;
+        if (auto chunks = pack_rows(heights, mid); chunks.size() <= best.size()) {
+            high = mid;
+            best = std::move(chunks);
+        } else {
+            low = mid;
+        }
+    }
+    return best;
+}
+
 } // namespace
 
 std::string render_latex(const Table& table) {
@@ -450,7 +544,8 @@ std::string render_latex(const Table& table) {
         }
     }
 
-    // 4. Each part as a table environment.
+    // 4. Each part as table environments: one, or several floats of consecutive rows when the
+    // part is taller than a page.
     const std::string title = latex_escape(caption_title(table));
     std::string notes = join(folded, " ");
     if (!without_values.empty())
@@ -459,6 +554,9 @@ std::string render_latex(const Table& table) {
     if (!table.caption.empty())
         notes += (notes.empty() ? "" : " ") + latex_prose(table.caption);
     const std::string sep_text = sep == column_sep ? "4pt" : "3pt";
+    // Footer rows (the w/t/l counts) appear in the parts that hold some of their counts; their
+    // label, in the first column, moves to the part's first cell when that column is gone.
+    const bool label_kept = columns.front().index == 0 || heading == std::size_t{0};
     std::string out;
     for (std::size_t p = 0; p < parts.size(); ++p) {
         const Part& part = parts[p];
@@ -487,8 +585,20 @@ std::string render_latex(const Table& table) {
             }
             width += 2 * sep;
         }
-        // Lines the table takes: a row, its spread's line, wrapped text, the headings.
-        std::size_t lines = table.footer.size();
+        const bool wide = width > ieee_column;
+        std::string caption = title;
+        if (parts.size() > 1)
+            caption += " (" + std::string(part.name.empty() ? "" : latex_escape(part.name) + "; ") + "part " +
+                       std::to_string(p + 1) + " of " + std::to_string(parts.size()) + ")";
+        const std::string label = "tab:" + table.id + (p == 0 ? "" : "-" + std::to_string(p + 1));
+        const std::string part_notes = p == 0 ? notes : "Notes as for Table~\\ref{tab:" + table.id + "}.";
+
+        // 5. The height of what the part holds, in pt, to split its rows into floats that fit a page.
+        const auto footer_shown = [&](const std::vector<Cell>& row) {
+            return std::any_of(part.columns.begin(), part.columns.end(),
+                               [&](std::size_t k) { return !columns[k].style.key && !row[k].empty; });
+        };
+        Heights heights;
         for (std::size_t r = 0; r < body.size(); ++r) {
             std::size_t row_lines = 1;
             for (std::size_t k : part.columns) {
@@ -498,35 +608,53 @@ std::string render_latex(const Table& table) {
                     row_lines = std::max(
                         row_lines, static_cast<std::size_t>(std::ceil(body[r][k].width / columns[k].width)));
             }
-            lines += row_lines;
-            if (heading && (r == 0 || table.rows[r][*heading].text != table.rows[r - 1][*heading].text))
-                lines += 2;
+            heights.rows.push_back(static_cast<double>(row_lines) * row_height);
+            heights.group_start.push_back(
+                heading && (r == 0 || table.rows[r][*heading].text != table.rows[r - 1][*heading].text));
         }
-        const bool long_table = lines > longtable_above;
-        const bool wide = width > ieee_column;
-        std::string caption = title;
-        if (parts.size() > 1)
-            caption += " (" + std::string(part.name.empty() ? "" : latex_escape(part.name) + "; ") + "part " +
-                       std::to_string(p + 1) + " of " + std::to_string(parts.size()) + ")";
-        const std::string label = "tab:" + table.id + (p == 0 ? "" : "-" + std::to_string(p + 1));
-        const std::string part_notes = p == 0 ? notes : "Notes as for Table~\\ref{tab:" + table.id + "}.";
+        heights.heading = heading ? heading_height : 0.0;
+        const auto footer_rows = std::count_if(footer.begin(), footer.end(), footer_shown);
+        if (footer_rows > 0) // a footer's label may head its row (below): counted as a heading
+            heights.footer = footer_rule + static_cast<double>(footer_rows) *
+                                               (label_kept || heading ? row_height : heading_height);
+        std::size_t head_lines = 1;
+        for (std::size_t k : part.columns) {
+            const Column& column = columns[k];
+            std::size_t lines = column.header_lines.size();
+            if (column.wrap && column.width > 0.0)
+                lines =
+                    static_cast<std::size_t>(std::ceil(latex_text_width(header_cell(column)) / column.width));
+            head_lines = std::max(head_lines, lines);
+        }
+        const double float_width = wide ? page_width : ieee_column; // the narrowest text it wraps in
+        const auto lines_of = [](double text_width, double line) {
+            return std::max(1.0, std::ceil(text_width / line));
+        };
+        const auto frame = [&](const std::string& text) { // caption, header and rules
+            return caption_base +
+                   caption_line * lines_of(caption_scale * latex_text_width(text), float_width) +
+                   rules_height + static_cast<double>(head_lines) * row_height;
+        };
+        const double notes_room =
+            part_notes.empty()
+                ? 0.0
+                : notes_skip + notes_line * lines_of(ragged * latex_text_width(part_notes), float_width);
+        heights.first_room = usable_height - frame(caption) - notes_room;
+        heights.later_room = usable_height - frame(caption + " (continued)");
+        const std::vector<std::pair<std::size_t, std::size_t>> chunks = split_rows(heights);
 
         std::string header_row;
         for (std::size_t i = 0; i < part.columns.size(); ++i)
             header_row += (i == 0 ? "" : " & ") + header_cell(columns[part.columns[i]]);
         header_row += " \\\\\n";
-        // Footer rows (the w/t/l counts) appear in the parts that hold some of their counts; their
-        // label, in the first column, moves to the part's first cell when that column is gone.
-        const bool label_kept = columns.front().index == 0 || heading == std::size_t{0};
-        const auto write_rows = [&](const std::vector<std::vector<Cell>>& rows, bool is_footer) {
+        const auto write_rows = [&](const std::vector<std::vector<Cell>>& rows, bool is_footer,
+                                    std::size_t begin, std::size_t end) {
             std::string text;
             const auto& source = is_footer ? table.footer : table.rows;
-            const std::string* previous = nullptr;
-            for (std::size_t r = 0; r < rows.size(); ++r) {
+            const std::string* previous = nullptr; // a float's first row is headed, even inside a run
+            for (std::size_t r = begin; r < end; ++r) {
                 const auto& row = rows[r];
-                if (is_footer && std::none_of(part.columns.begin(), part.columns.end(), [&](std::size_t k) {
-                        return !columns[k].style.key && !row[k].empty;
-                    }))
+                if (is_footer && !footer_shown(row))
                     continue;
                 // The column that heads rows: a heading; a footer's label whose column is gone and
                 // whose row has no empty first cell to take it: a heading too.
@@ -578,46 +706,45 @@ std::string render_latex(const Table& table) {
             }
             return text;
         };
-        std::string rows_text = write_rows(body, false);
-        if (const std::string summary = write_rows(footer, true); !summary.empty())
-            rows_text += "\\midrule\n" + summary;
 
-        out += "% " + table.title + " (written by mhbench report)" +
-               (parts.size() > 1 ? "; part " + std::to_string(p + 1) + " of " + std::to_string(parts.size())
-                                 : "") +
-               "\n";
-        out += "% Needs \\usepackage{booktabs,array" + std::string(long_table ? ",longtable" : "") +
-               (part.resize ? ",graphicx" : "") + "}.\n";
-        if (long_table) {
-            out += "% longtable: breaks across pages; one-column documents only.\n";
-            out += "\\begingroup\n\\footnotesize\n\\setlength{\\tabcolsep}{" + sep_text + "}\n";
-            out += "\\begin{longtable}{" + spec + "}\n";
-            out += "\\caption{" + caption + "}\\label{" + label + "} \\\\\n";
-            out += "\\toprule\n" + header_row + "\\midrule\n\\endfirsthead\n";
-            out += "\\caption[]{" + caption + " (continued)} \\\\\n";
-            out += "\\toprule\n" + header_row + "\\midrule\n\\endhead\n";
-            out += "\\bottomrule\n\\endfoot\n";
-            out += rows_text;
-            out += "\\end{longtable}\n";
-            if (!part_notes.empty())
-                out += "{\\raggedright " + part_notes + "\\par}\n";
-            out += "\\endgroup\n";
-            continue;
-        }
         const std::string environment = wide ? "table*" : "table";
-        if (wide)
-            out += "% table*: wider than one column of a two-column paper (252 pt), so it spans both there; "
-                   "in one column it is a plain table.\n";
-        out += "\\begin{" + environment + "}[htbp]\n\\centering\n";
-        out += "\\caption{" + caption + "}\n\\label{" + label + "}\n";
-        out += "\\footnotesize\n\\setlength{\\tabcolsep}{" + sep_text + "}\n";
-        if (part.resize)
-            out += "% \\resizebox: one column alone is wider than the page.\n\\resizebox{\\linewidth}{!}{%\n";
-        out += "\\begin{tabular}{" + spec + "}\n\\toprule\n" + header_row + "\\midrule\n" + rows_text +
-               "\\bottomrule\n\\end{tabular}" + (part.resize ? "}" : "") + "\n";
-        if (!part_notes.empty())
-            out += "\\par\\medskip\n{\\raggedright " + part_notes + "\\par}\n";
-        out += "\\end{" + environment + "}\n";
+        for (std::size_t c = 0; c < chunks.size(); ++c) {
+            std::string rows_text = write_rows(body, false, chunks[c].first, chunks[c].second);
+            if (c + 1 == chunks.size())
+                if (const std::string summary = write_rows(footer, true, 0, footer.size()); !summary.empty())
+                    rows_text += "\\midrule\n" + summary;
+            std::string parts_said;
+            if (parts.size() > 1)
+                parts_said += "; part " + std::to_string(p + 1) + " of " + std::to_string(parts.size());
+            if (chunks.size() > 1)
+                parts_said += "; rows " + std::to_string(chunks[c].first + 1) + "-" +
+                              std::to_string(chunks[c].second) + " of " + std::to_string(body.size());
+            out += "% " + table.title + " (written by mhbench report)" + parts_said + "\n";
+            out +=
+                "% Needs \\usepackage{booktabs,array" + std::string(part.resize ? ",graphicx" : "") + "}.\n";
+            if (wide)
+                out += "% table*: wider than one column of a two-column paper (252 pt), so it spans both "
+                       "there; in one column it is a plain table.\n";
+            if (c == 0 && chunks.size() > 1)
+                out += "% Too tall for one page: its rows continue in the next " +
+                       std::string(chunks.size() == 2 ? "float"
+                                                      : std::to_string(chunks.size() - 1) + " floats") +
+                       ", under the same number.\n";
+            out += "\\begin{" + environment + "}[htbp]\n\\centering\n";
+            if (c == 0)
+                out += "\\caption{" + caption + "}\n\\label{" + label + "}\n";
+            else
+                out += "\\addtocounter{table}{-1}\n\\caption{" + caption + " (continued)}\n";
+            out += "\\footnotesize\n\\setlength{\\tabcolsep}{" + sep_text + "}\n";
+            if (part.resize)
+                out += "% \\resizebox: one column alone is wider than the "
+                       "page.\n\\resizebox{\\linewidth}{!}{%\n";
+            out += "\\begin{tabular}{" + spec + "}\n\\toprule\n" + header_row + "\\midrule\n" + rows_text +
+                   "\\bottomrule\n\\end{tabular}" + (part.resize ? "}" : "") + "\n";
+            if (c == 0 && !part_notes.empty())
+                out += "\\par\\medskip\n{\\raggedright " + part_notes + "\\par}\n";
+            out += "\\end{" + environment + "}\n";
+        }
     }
     return out;
 }

@@ -5,7 +5,9 @@
 # `setup-debian.sh mpi` Open MPI (the MHB_WITH_MPI build, scripts/mpi.sh), `setup-debian.sh ccache`
 # the compiler cache CI shares between its release and MPI builds, `setup-debian.sh browser` Chromium
 # (report/index.html checked in a headless browser: scripts/browser-check.sh), `setup-debian.sh tex`
-# pdflatex with latex-base and latex-recommended (report.tex compiled: scripts/latex-check.sh).
+# pdflatex with latex-base and latex-recommended, and the journal classes IEEEtran and elsarticle
+# (texlive-publishers) with the Times fonts IEEEtran uses (texlive-fonts-recommended): report.tex
+# and the tables in two-column journals compiled by scripts/latex-check.sh.
 set -euo pipefail
 
 packages=(
@@ -25,7 +27,8 @@ optional_fuzz=(clang libclang-rt-dev)    # scripts/fuzz.sh: clang with libFuzzer
 optional_mpi=(libopenmpi-dev openmpi-bin) # scripts/mpi.sh: Open MPI for `mpirun -np N mhbench run`
 optional_ccache=(ccache)                 # .ci/run: the MPI build reuses the release build's objects
 optional_browser=(chromium)              # scripts/browser-check.sh: the HTML report in headless Chromium
-optional_tex=(texlive-latex-base texlive-latex-recommended lmodern) # scripts/latex-check.sh: pdflatex
+optional_tex=(texlive-latex-base texlive-latex-recommended lmodern # scripts/latex-check.sh: pdflatex,
+    texlive-publishers texlive-fonts-recommended)                    # IEEEtran, elsarticle, Times
 
 for group in "$@"; do
     case "$group" in

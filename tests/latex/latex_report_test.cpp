@@ -1,8 +1,10 @@
 // pdflatex on the LaTeX of real reports (issue 12): report.tex of the paper study and of an
 // ablation with two budgets (run by the CLI with small presets), every table file included on its
 // own, and the golden fixture of tests/data/latex/ compile without an error, without an Overfull
-// \hbox (a table wider than the text) and without a float too large for the page. Skipped where
-// pdflatex is not on PATH (scripts/latex-check.sh installs it).
+// \hbox (a table wider than the text) and without a float too large for the page. The tables of
+// an ablation (8 variants x 3 conditions: tables long enough to be split into several floats) do
+// the same in two-column journals, IEEEtran's conference layout and elsarticle's 5p (issue 21).
+// Skipped where pdflatex, or the journal's class, is missing (scripts/latex-check.sh installs them).
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +25,11 @@ bool have_pdflatex() {
     return std::system("command -v pdflatex >/dev/null 2>&1") == 0;
 }
 
+// A class file TeX finds (IEEEtran.cls and elsarticle.cls come with Debian's texlive-publishers).
+bool have_tex_file(const std::string& file) {
+    return std::system(("kpsewhich '" + file + "' >/dev/null 2>&1").c_str()) == 0;
+}
+
 // What the log of the last pass says went wrong: errors, boxes too wide, floats too tall.
 std::string problems_in_log(const fs::path& log) {
     std::istringstream in(read_text(log));
@@ -34,8 +41,8 @@ std::string problems_in_log(const fs::path& log) {
     return out;
 }
 
-// Compiles `file` (in `dir`) twice, as one does for references and longtable widths; returns what
-// went wrong ("" when nothing did).
+// Compiles `file` (in `dir`) twice, as one does for references; returns what went wrong ("" when
+// nothing did).
 std::string compile(const fs::path& dir, const std::string& file) {
     const std::string command = "cd '" + dir.string() +
                                 "' && pdflatex -interaction=nonstopmode -halt-on-error '" + file +
@@ -49,20 +56,39 @@ std::string compile(const fs::path& dir, const std::string& file) {
     return problems;
 }
 
-// A document that \input's every table file of `report` on its own: each stands alone with the
-// packages its first comment names.
-std::string standalone_tables(const fs::path& report) {
+// A document `name`.tex of class `document_class` (with its options) that \input's every table
+// file of `report` on its own, with `preamble` and the packages the files' "% Needs \usepackage{...}."
+// comments name.
+std::string tables_in(const fs::path& report, const std::string& name, const std::string& document_class,
+                      const std::string& preamble = "") {
+    static const std::string needs = "% Needs \\usepackage{";
     std::string inputs;
-    for (const auto& entry : fs::directory_iterator(report))
-        if (entry.path().extension() == ".tex" && entry.path().filename() != "report.tex" &&
-            entry.path().filename() != "tables.tex")
-            inputs += "\\input{" + entry.path().filename().string() + "}\n\\clearpage\n";
-    std::ofstream(report / "tables.tex")
-        << "\\documentclass{article}\n\\usepackage[T1]{fontenc}\n"
-           "\\usepackage{lmodern}\n\\usepackage{booktabs,array,longtable,graphicx}\n"
-           "\\begin{document}\n"
+    std::string packages;
+    for (const auto& entry : fs::directory_iterator(report)) {
+        const std::string file = entry.path().filename().string();
+        if (entry.path().extension() != ".tex" || file == "report.tex" || file.rfind("tables", 0) == 0)
+            continue;
+        inputs += "\\input{" + file + "}\n\\clearpage\n";
+        const std::string text = read_text(entry.path());
+        for (std::size_t at = text.find(needs); at != std::string::npos; at = text.find(needs, at + 1)) {
+            const std::size_t begin = at + needs.size();
+            std::istringstream list(text.substr(begin, text.find('}', begin) - begin));
+            for (std::string package; std::getline(list, package, ',');)
+                if (("," + packages + ",").find("," + package + ",") == std::string::npos)
+                    packages += (packages.empty() ? "" : ",") + package;
+        }
+    }
+    EXPECT_FALSE(inputs.empty()) << "no table file in " << report;
+    std::ofstream(report / (name + ".tex"))
+        << "\\documentclass" << document_class << "\n"
+        << preamble << "\\usepackage{" << packages << "}\n\\begin{document}\n"
         << inputs << "\\end{document}\n";
-    return compile(report, "tables.tex");
+    return compile(report, name + ".tex");
+}
+
+// Every table file of `report` in a one-column article, each on its own.
+std::string standalone_tables(const fs::path& report) {
+    return tables_in(report, "tables", "{article}", "\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n");
 }
 
 fs::path run_study(const std::string& name, const std::string& run_args) {
@@ -90,6 +116,33 @@ TEST(LatexReport, AblationWithTwoBudgetsCompilesAndEveryTableFits) {
     EXPECT_NE(read_text(report / "report.tex").find("\\section{Budget evaluations=1500}"), std::string::npos);
     EXPECT_EQ(compile(report, "report.tex"), "");
     EXPECT_EQ(standalone_tables(report / "iterations_8"), "");
+}
+
+// The report of an ablation at one small budget: ITLBO's 8 component variants on the preset's 3
+// conditions, so that the tables of variants by conditions are split into floats.
+fs::path ablation_report(const std::string& name) {
+    const fs::path report = run_study(name, "--study ablation --runs 2 --budget iterations=4");
+    bool continued = false;
+    for (const auto& entry : fs::directory_iterator(report))
+        if (entry.path().extension() == ".tex" && entry.path().filename() != "report.tex")
+            continued = continued || read_text(entry.path()).find("(continued)}") != std::string::npos;
+    EXPECT_TRUE(continued) << "no table of " << report << " is long enough to be continued";
+    return report;
+}
+
+TEST(LatexReport, AblationTablesFitTwoColumnIeeeConferencePages) {
+    if (!have_pdflatex() || !have_tex_file("IEEEtran.cls"))
+        GTEST_SKIP() << "no pdflatex or no IEEEtran.cls (scripts/latex-check.sh installs texlive-publishers)";
+    const fs::path report = ablation_report("ieee");
+    EXPECT_EQ(tables_in(report, "tables_ieee", "[conference]{IEEEtran}"), "");
+}
+
+TEST(LatexReport, AblationTablesFitTwoColumnElsevierPages) {
+    if (!have_pdflatex() || !have_tex_file("elsarticle.cls"))
+        GTEST_SKIP()
+            << "no pdflatex or no elsarticle.cls (scripts/latex-check.sh installs texlive-publishers)";
+    const fs::path report = ablation_report("elsevier");
+    EXPECT_EQ(tables_in(report, "tables_elsevier", "[5p]{elsarticle}"), "");
 }
 
 TEST(LatexReport, GoldenFixtureCompiles) {

@@ -2,8 +2,8 @@
 // golden copy in tests/data/latex/ (regenerate with MHB_UPDATE_GOLDEN=1 after a deliberate change,
 // compile tests/data/latex/report.tex and review the PDF and the diff), and the layout rules hold on
 // tables made for them: one numbering, wide tables split with their key columns repeated, constant
-// columns said once, long tables as longtable. The latex-labelled test (tests/latex/) compiles real
-// reports with pdflatex.
+// columns said once, long tables continued in floats that fit a page. The latex-labelled test
+// (tests/latex/) compiles real reports with pdflatex.
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -164,11 +164,79 @@ TEST(LatexLayout, AWideTableIsSplitWithItsKeyColumnsRepeated) {
             << c;
 }
 
-TEST(LatexLayout, ALongTableBreaksAcrossPages) {
-    const std::string latex = render_latex(wide_table(60, 2));
-    EXPECT_NE(latex.find("\\begin{longtable}"), std::string::npos);
-    EXPECT_NE(latex.find("\\endhead"), std::string::npos); // the header repeats on every page
-    EXPECT_EQ(latex.find("\\begin{table"), std::string::npos);
+// The floats a table was split into: the text of each, from its \begin{table to its \end{table.
+std::vector<std::string> floats_of(const std::string& latex) {
+    std::vector<std::string> out;
+    for (std::size_t at = latex.find("\\begin{table"); at != std::string::npos;
+         at = latex.find("\\begin{table", at + 1))
+        out.push_back(latex.substr(at, latex.find("\\end{table", at) - at));
+    return out;
+}
+
+TEST(LatexLayout, ALongTableContinuesInFloatsThatFitAPage) {
+    const std::string latex = render_latex(wide_table(120, 2));
+    EXPECT_EQ(latex.find("longtable"), std::string::npos) << latex; // refused by two-column classes
+    const auto floats = floats_of(latex);
+    ASSERT_GE(floats.size(), 3u) << latex; // 120 lines of 9.8 pt: more than two pages of 528 pt
+    EXPECT_EQ(count(latex, "\\label{"), 1u) << latex;
+    EXPECT_NE(floats.front().find("\\caption{A wide table}\n\\label{tab:wide}"), std::string::npos);
+    EXPECT_EQ(count(latex, "Values of $p$"), 1u); // the notes once, under the first float
+    std::size_t rows = 0;
+    for (std::size_t f = 0; f < floats.size(); ++f) {
+        EXPECT_EQ(count(floats[f], "\\toprule\nAlgorithm & v0 & v1 \\\\\n\\midrule"), 1u)
+            << floats[f]; // the header
+        if (f > 0) {
+            EXPECT_NE(floats[f].find("\\addtocounter{table}{-1}\n\\caption{A wide table (continued)}"),
+                      std::string::npos)
+                << floats[f];
+        }
+        const std::size_t here = count(floats[f], "\\\\\n") - 1;
+        EXPECT_LE(static_cast<double>(here) * 9.8, 0.96 * 550 - 50) << floats[f]; // less caption and header
+        rows += here;
+    }
+    EXPECT_EQ(rows, 120u);
+    for (std::size_t r = 0; r < 120; ++r) // every row once, in order
+        EXPECT_EQ(count(latex, "algorithm" + std::to_string(r) + " &"), 1u) << r;
+    EXPECT_LT(latex.find("algorithm118 &"), latex.find("algorithm119 &"));
+}
+
+// Ten problems heading runs of eight algorithms each (ITLBO's ablation variants, say).
+Table headed_table(std::size_t problems, std::size_t algorithms) {
+    Table t;
+    t.id = "headed";
+    t.title = "Table 3: Variants by problem";
+    t.caption = "Median (IQR) of the final fitness.";
+    t.header = {"Problem", "Algorithm", "Median"};
+    for (std::size_t p = 0; p < problems; ++p)
+        for (std::size_t a = 0; a < algorithms; ++a)
+            t.add_row(
+                {text_cell("pmsm:load=" + std::to_string(p)), text_cell("variant" + std::to_string(a)),
+                 spread_cell(1.0 + static_cast<double>(a), 0.1, a % 2 == 0 ? "+" : "-", {4, -1}, {2, -1})});
+    t.latex_column(0).heading = true;
+    t.latex_column(1).key = true;
+    format_columns(t);
+    return t;
+}
+
+TEST(LatexLayout, ALongTableBreaksBetweenRunsOfRowsUnderAHeading) {
+    const std::string latex = render_latex(headed_table(10, 8));
+    const auto floats = floats_of(latex);
+    ASSERT_GE(floats.size(), 2u) << latex;
+    for (const auto& f : floats) {
+        // Each float starts with a heading and never ends with one.
+        EXPECT_NE(f.find("\\midrule\n\\multicolumn{2}{l}{\\textit{pmsm:"), std::string::npos) << f;
+        EXPECT_EQ(f.find("}} \\\\\n\\bottomrule"), std::string::npos) << f;
+        EXPECT_EQ(count(f, "variant0 &"), count(f, "variant7 &")) << f; // runs kept whole
+    }
+    EXPECT_EQ(count(latex, "\\textit{pmsm:"), 10u) << latex; // no heading repeated
+}
+
+TEST(LatexLayout, ARunLongerThanAPageContinuesUnderItsHeadingAgain) {
+    const std::string latex = render_latex(headed_table(1, 80));
+    const auto floats = floats_of(latex);
+    ASSERT_GE(floats.size(), 2u) << latex;
+    for (const auto& f : floats)
+        EXPECT_NE(f.find("\\midrule\n\\multicolumn{2}{l}{\\textit{pmsm:"), std::string::npos) << f;
 }
 
 TEST(LatexText, MathsForSymbolsAndMinusSigns) {
