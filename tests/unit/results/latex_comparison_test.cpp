@@ -1,4 +1,4 @@
-// What the comparison tables show (issue 12): the problems x algorithms table shows the median
+// What the comparison tables show (issues 12 and 21): the problems x algorithms table shows the median
 // (IQR), the statistic its rank-test markers are about, bolds the best median, and ends in a w/t/l
 // row that counts the markers; the summary's budget columns take every algorithm of a problem at
 // the same evaluation counts.
@@ -185,6 +185,50 @@ TEST(SummaryBudgetColumns, ProblemsWithDifferentCountsGetAColumnOfE) {
     EXPECT_NE(s.caption.find("E per problem: 400 on rastrigin:dim=2, 1000 on sphere:dim=2."),
               std::string::npos)
         << s.caption;
+}
+
+// Degenerate tests are named where the tests are: on "tied" every run of both algorithms ends at
+// 0 (every value the same: the rank-sum test has no variance; every paired difference zero: the
+// signed-rank test has nothing to rank), and the tables show z = 0, p = 1, '=' and say why.
+TEST(ComparisonTables, CaptionsSayWhenATestIsDegenerate) {
+    StudyData data;
+    data.directory = "/nonexistent/tied";
+    for (std::int64_t i = 0; i < 6; ++i) {
+        data.runs.push_back(run("itlbo", "tied", "iterations=2", i, 0.0));
+        data.runs.push_back(run("tlbo", "tied", "iterations=2", i, 0.0));
+        data.runs.push_back(run("itlbo", "spread", "iterations=2", i, static_cast<double>(i)));
+        data.runs.push_back(run("tlbo", "spread", "iterations=2", i, static_cast<double>(i) + 0.5));
+    }
+    const StudyIndex index(data);
+    const auto tables = comparison_tables(index, {"itlbo", 0.05, {1.0}});
+    const Table& tests = table_named(tables, "tests");
+    std::size_t tied_rows = 0;
+    for (const auto& row : tests.rows)
+        if (row[0].text == "tied") {
+            ++tied_rows;
+            EXPECT_EQ(*row[column_named(tests, "p")].number, 1.0);
+            EXPECT_EQ(*row[column_named(tests, "Signed-rank p")].number, 1.0);
+            EXPECT_EQ(row[column_named(tests, "Result")].text, "=");
+        }
+    EXPECT_EQ(tied_rows, 1U);
+    for (const std::string id : {"tests", "comparison"}) {
+        const std::string& caption = table_named(tables, id).caption;
+        EXPECT_NE(
+            caption.find("In 1 comparison every value of both samples is the same: the rank-sum test has "
+                         "no variance there"),
+            std::string::npos)
+            << id << ": " << caption;
+        EXPECT_NE(caption.find("In 1 comparison every paired difference is zero"), std::string::npos)
+            << id << ": " << caption;
+    }
+    // Without a degenerate test the captions say nothing of it.
+    StudyData plain;
+    for (const auto& r : data.runs)
+        if (r.problem == "spread")
+            plain.runs.push_back(r);
+    const auto plain_tables = comparison_tables(StudyIndex(plain), {"itlbo", 0.05, {1.0}});
+    EXPECT_EQ(table_named(plain_tables, "tests").caption.find("every value of both samples"),
+              std::string::npos);
 }
 
 } // namespace
