@@ -85,9 +85,9 @@ std::string json_number(double value) {
 }
 
 // raw_y as the .dat holds it: "None" (IOH's no-value mark) when not finite.
-std::string dat_value(double value, std::size_t& none_values) {
+std::string dat_value(double value, IohPrecision precision, std::size_t& none_values) {
     if (std::isfinite(value))
-        return ioh_fixed(value);
+        return precision == IohPrecision::logger ? ioh_fixed(value) : ioh_shortest(value);
     ++none_values;
     return "None";
 }
@@ -279,7 +279,7 @@ std::string ioh_shortest(double value) {
            digits.substr(static_cast<std::size_t>(integer_digits));
 }
 
-IohExportSummary write_ioh_export(const StudyIndex& index, const fs::path& dir) {
+IohExportSummary write_ioh_export(const StudyIndex& index, const fs::path& dir, IohPrecision precision) {
     IohExportSummary summary;
     remove_earlier_export(dir);
 
@@ -357,8 +357,8 @@ IohExportSummary write_ioh_export(const StudyIndex& index, const fs::path& dir) 
                 for (const ExportedRun& run : scenario.runs) {
                     dat += "evaluations raw_y\n";
                     for (const Row& row : run.rows)
-                        dat += std::to_string(row.evaluations) + ' ' + dat_value(row.y, summary.none_values) +
-                               '\n';
+                        dat += std::to_string(row.evaluations) + ' ' +
+                               dat_value(row.y, precision, summary.none_values) + '\n';
                     std::string x;
                     for (std::size_t k = 0; k < run.record->best_x.size(); ++k)
                         x += (k == 0 ? "" : ", ") + json_number(run.record->best_x[k]);

@@ -81,8 +81,15 @@ struct IohExportSummary {
     std::size_t approximate_runs = 0; // runs stored without improvements: rows from the grid
 };
 
+// How raw_y is written in the .dat files. `logger`: "%.10f", byte for byte what IOHexperimenter's
+// logger writes (every error below 5e-11 reads 0). `full`: the shortest text that reads back to
+// the same double (ioh_shortest, the JSON's format), which IOHanalyzer's reader also takes (it
+// reads every column as text and converts it with as.numeric), for errors down to 1e-300.
+enum class IohPrecision { logger, full };
+
 // Writes the export under `dir`, after removing what an earlier export left there (IOH files and
 // data folders in its algorithm folders, which IOHanalyzer would otherwise load too).
-IohExportSummary write_ioh_export(const StudyIndex& index, const std::filesystem::path& dir);
+IohExportSummary write_ioh_export(const StudyIndex& index, const std::filesystem::path& dir,
+                                  IohPrecision precision = IohPrecision::logger);
 
 } // namespace mhb

@@ -326,7 +326,7 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
     } else if (fs::exists(dir / "cec" / "README")) {
         fs::remove_all(dir / "cec", ec); // from a report of the study when it followed a protocol
     }
-    const IohExportSummary ioh = write_ioh_export(index, dir / "ioh");
+    const IohExportSummary ioh = write_ioh_export(index, dir / "ioh", options.ioh_precision);
     console << "tables and curve data: " << dir.string() << '\n';
     if (ioh.files > 0)
         console << "IOHprofiler export (" << ioh.files

@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "results/ioh_export.hpp"
 #include "results/store.hpp"
 
 namespace mhb {
@@ -40,7 +41,8 @@ struct ReportOptions {
     double alpha = 0.05;                  // significance level of the markers
     std::set<std::string> formats = {"md", "tex", "csv"};
     bool figures = true;
-    std::filesystem::path plot_script; // scripts/plot_study.py; empty: figures are skipped
+    IohPrecision ioh_precision = IohPrecision::logger; // raw_y of ioh/*.dat
+    std::filesystem::path plot_script;                 // scripts/plot_study.py; empty: figures are skipped
     // Interpreters tried in order; the first that can `import matplotlib` draws the figures.
     std::vector<std::string> python_candidates = {"/usr/bin/python3", "python3"};
     // Where a failure of the figures is reported (one line each); never nullptr.

@@ -147,8 +147,9 @@ const char* const other_files = R"(## Other files
 
 - `ioh/`: the IOHprofiler export for IOHanalyzer, as IOHexperimenter's analyzer logger writes it
   (a .json per function and a .dat per function and dimension; a row per improvement). raw_y is
-  written `%.10f`, the logger's format that IOHanalyzer reads: every error below 5e-11 reads 0 and
-  only ten decimals of smaller errors survive. The full-precision values are in the study's
+  written `%.10f` by default, the logger's own format: every error below 5e-11 reads 0 and only ten
+  decimals of smaller errors survive. `mhbench report DIR --ioh-precision full` writes every digit
+  instead (IOHanalyzer reads both); the full-precision values are also in the study's
   `improvements.csv`.
 )";
 

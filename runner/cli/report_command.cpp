@@ -76,6 +76,7 @@ int run_report_command(const std::vector<std::string>& args) {
     std::string reference;
     std::string formats = "md,tex,csv";
     double alpha = 0.05;
+    std::string ioh_precision = "ioh";
     po::options_description visible(
         "Usage: mhbench report DIR [options]\n\n"
         "Rebuilds, from the study directory DIR alone, the report in DIR/report/:\n"
@@ -103,7 +104,10 @@ int run_report_command(const std::vector<std::string>& args) {
         "no-figures", "write tables and curve data only (index.html says so; it shows figures an earlier "
                       "report drew, marked as such)")(
         "open", "print index.html's path and open it in a browser (xdg-open) when a display is available")(
-        "format", po::value(&formats)->default_value(formats), "table formats to write: any of md,tex,csv");
+        "format", po::value(&formats)->default_value(formats), "table formats to write: any of md,tex,csv")(
+        "ioh-precision", po::value(&ioh_precision)->default_value(ioh_precision),
+        "raw_y in the IOHprofiler export (ioh/*.dat): ioh = %.10f, what IOHexperimenter writes (an error "
+        "below 5e-11 reads 0); full = every digit (1.234e-12), which IOHanalyzer reads too");
     po::options_description hidden;
     hidden.add_options()("study", po::value(&study_dir));
     po::options_description all;
@@ -118,8 +122,14 @@ int run_report_command(const std::vector<std::string>& args) {
         std::cerr << "mhbench report: give the study directory (mhbench report DIR; see --help)\n";
         return exit_usage;
     }
+    if (ioh_precision != "ioh" && ioh_precision != "full") {
+        std::cerr << "mhbench report: --ioh-precision '" << ioh_precision.substr(0, 40)
+                  << "' is not one of ioh, full\n";
+        return exit_usage;
+    }
     ReportOptions options;
     options.out_dir = out_dir;
+    options.ioh_precision = ioh_precision == "full" ? IohPrecision::full : IohPrecision::logger;
     if (!reference.empty())
         options.reference = reference;
     options.alpha = alpha;

@@ -338,6 +338,8 @@ std::vector<BadInput> catalogue() {
         {study_copy, "report s --reference cmaes --no-figures", 2, one_line("the study has: ")},
         {study_copy, "report s --format pdf --no-figures", 2,
          says({"mhbench report: --format: 'pdf' is not one of md, tex, csv"})},
+        {study_copy, "report s --ioh-precision 12 --no-figures", 2,
+         says({"mhbench report: --ioh-precision '12' is not one of ioh, full"})},
         {study_copy, "report s --bogus", 2, says({"mhbench report: unrecognised option '--bogus' (see mhbench report --help)"})},
         {study_copy + " && echo x > file", "report s --no-figures --out file/r", 1, one_line("file/r")},
         {study_copy, "(trap '' XFSZ; ulimit -f 1; mhbench report s --no-figures)", 1,

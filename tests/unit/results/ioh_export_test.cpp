@@ -191,6 +191,29 @@ TEST(IohExport, RowsAreTheImprovementsAndTheLastEvaluation) {
         << bbob;
 }
 
+// --ioh-precision full: raw_y with every digit, where the logger's %.10f reads tiny errors as 0.
+TEST(IohExport, FullPrecisionKeepsEveryDigitOfRawY) {
+    StudyData data;
+    RunRecord a = run(0, "de", "sphere:dim=2", 0, 3.1e-12, 10);
+    a.improvements = ImprovementTrace{{{1, 10.0}, {4, 2.9e-9}, {6, 3.1e-12}}, 0.125};
+    RunRecord b = run(1, "de", "sphere:dim=2", 1, 1.0, 10);
+    b.improvements = ImprovementTrace{{{2, 1.0}}, inf};
+    data.runs = {a, b};
+    const fs::path logger = fresh_dir("precision_logger");
+    const fs::path full = fresh_dir("precision_full");
+    (void)write_ioh_export(StudyIndex(data), logger);
+    const IohExportSummary summary = write_ioh_export(StudyIndex(data), full, IohPrecision::full);
+    EXPECT_EQ(summary.none_values, 1u);
+    const fs::path dat = fs::path("de") / "data_f101_sphere" / "IOHprofiler_f101_DIM2.dat";
+    EXPECT_EQ(read_text(logger / dat), "evaluations raw_y\n1 10.0000000000\n4 0.0000000029\n6 0.0000000000\n"
+                                       "10 0.1250000000\nevaluations raw_y\n2 1.0000000000\n10 None\n");
+    EXPECT_EQ(read_text(full / dat),
+              "evaluations raw_y\n1 10\n4 2.9e-09\n6 3.1e-12\n10 0.125\nevaluations raw_y\n2 1\n10 None\n");
+    // The JSON is the same either way.
+    EXPECT_EQ(read_text(logger / "de" / "IOHprofiler_f101_sphere.json"),
+              read_text(full / "de" / "IOHprofiler_f101_sphere.json"));
+}
+
 TEST(IohExport, RunsWithoutImprovementsUseTheirGridAndSaySo) {
     StudyData data;
     RunRecord old = run(0, "pso", "pmsm:load=2,speed=2500", 0, 4.0, 1200);
