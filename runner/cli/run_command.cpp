@@ -32,6 +32,7 @@
 #include "runner/shards.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
+#include "runner/study_lock.hpp"
 #include "runner/study_options.hpp"
 #include "runner/study_presets.hpp"
 
@@ -301,6 +302,15 @@ int run_run_command(const std::vector<std::string>& args) {
         worker.threads = threads;
         worker.stop = &stop_requested;
         return run_study_anywhere(*prepared, nullptr, worker).interrupted ? exit_interrupted : exit_ok;
+    }
+    // One writer per directory: taken before the directory is read, so that what is checked
+    // below is what this process then writes to.
+    std::optional<StudyLock> lock;
+    try {
+        lock.emplace(dir, "mhbench run");
+    } catch (const StudyInUse& e) {
+        std::cerr << "mhbench run: " << e.what() << "; wait for it or use another --out\n";
+        return exit_failure;
     }
     std::vector<std::string> command_line{"mhbench", "run"};
     command_line.insert(command_line.end(), args.begin(), args.end());
