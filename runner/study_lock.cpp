@@ -93,7 +93,8 @@ StudyLock::StudyLock(const std::filesystem::path& dir, const std::string& comman
     std::error_code ec;
     made_dir_ = std::filesystem::create_directories(dir, ec);
     if (ec)
-        throw std::runtime_error(dir.string() + ": cannot be made (" + ec.message() + ")");
+        throw std::runtime_error(dir.string() + ": cannot create the output directory (" + ec.message() +
+                                 ")");
     while (fd_ < 0) {
         const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
         if (fd < 0)
