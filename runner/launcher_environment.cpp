@@ -27,12 +27,10 @@ LaunchedProcesses launched_processes(const EnvironmentLookup& lookup) {
     };
     for (const Size size :
          {Size{"OMPI_COMM_WORLD_SIZE", 1}, Size{"PMI_SIZE", 1}, Size{"SLURM_STEP_NUM_TASKS", 2}})
-        if (const int count = number_in(lookup, size.name, size.least); count > 0) {
+        if (const int count = number_in(lookup, size.name, size.least); count > found.count)
             found = {count, false, std::string(size.name) + "=" + lookup(size.name)};
-            break;
-        }
     for (const char* rank_name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK", "SLURM_PROCID"})
-        if (const int rank = number_in(lookup, rank_name, 1); rank + 1 > found.count && rank > 0)
+        if (const int rank = number_in(lookup, rank_name, 1); rank > 0 && rank + 1 > found.count)
             found = {rank + 1, true, std::string(rank_name) + "=" + lookup(rank_name)};
     return found;
 }

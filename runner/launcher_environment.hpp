@@ -18,7 +18,8 @@ struct LaunchedProcesses {
     std::string evidence;  // the variable that says so, "NAME=value"
 };
 
-// A size variable gives the count (Open MPI's first); a rank r > 0 proves at least r + 1. Slurm
+// The largest count any variable shows: a size gives it, a rank r > 0 proves at least r + 1
+// (launchers nest: `mpirun -np 1` in each task of `srun -n 4` still makes four). Slurm
 // starts every batch job, MPI or not, so its variables count only when they show several tasks
 // of one step: SLURM_NTASKS alone is not read, since a batch script of `sbatch -n 4` holds it (and
 // SLURM_PROCID = 0) while running once; srun sets SLURM_STEP_NUM_TASKS for the tasks it starts.

@@ -51,9 +51,15 @@ TEST(LauncherEnvironment, EveryLauncherOfSeveralProcessesIsRecognised) {
     }
 }
 
-TEST(LauncherEnvironment, OpenMpisOwnSizeComesFirst) {
+TEST(LauncherEnvironment, TheLargestCountIsTaken) {
     EXPECT_EQ(launched({{"PMI_SIZE", "3"}, {"OMPI_COMM_WORLD_SIZE", "4"}}).count, 4);
     EXPECT_EQ(launched({{"PMI_SIZE", "3"}}).count, 3);
+    // mpirun -np 1 in each task of srun -n 4: four processes all the same
+    const LaunchedProcesses nested = launched({{"OMPI_COMM_WORLD_SIZE", "1"}, {"SLURM_STEP_NUM_TASKS", "4"}});
+    EXPECT_EQ(nested.count, 4);
+    EXPECT_EQ(nested.evidence, "SLURM_STEP_NUM_TASKS=4");
+    EXPECT_EQ(launched({{"OMPI_COMM_WORLD_SIZE", "4"}, {"OMPI_COMM_WORLD_RANK", "3"}}).evidence,
+              "OMPI_COMM_WORLD_SIZE=4"); // a rank inside the size adds nothing
 }
 
 TEST(LauncherEnvironment, OneProcessJobsAreNotSeveral) {
