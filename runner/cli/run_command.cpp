@@ -130,7 +130,9 @@ void print_help(const po::options_description& options) {
            "report uses paired tests. Results are identical for any --threads. Every finished run is\n"
            "kept in DIR/store.bin: after Ctrl-C or a kill the same command resumes, and a larger\n"
            "study into the same --out (more runs, algorithms, problems, budgets) computes only the\n"
-           "runs it lacks. Under `mpirun -np N` (an MPI build) the runs spread over the ranks.\n\n"
+           "runs it lacks. Under `mpirun -np N` (an MPI build) the runs spread over the ranks.\n"
+           "One process writes a directory at a time: while DIR/.mhbench.lock is held, another\n"
+           "run, merge or report into DIR is refused with the holder's pid and host.\n\n"
         << options << "\nStudy presets (--study NAME; the files are in scripts/studies/):\n"
         << preset_lines()
         << "\nExamples:\n"
