@@ -58,6 +58,9 @@ struct StudyFiles {
     static constexpr const char* store = "store.bin";
     // Format 2 (before store.bin): the journal of an unfinished study, keyed by run_id.
     static constexpr const char* journal = "journal.txt";
+    // The advisory lock of the one process writing the directory (runner/study_lock.hpp); not
+    // a record: present only while a writer holds it, or after one was killed.
+    static constexpr const char* lock = ".mhbench.lock";
 };
 
 // The format of store.bin and of the records in it; part of every run's identity, so a change to

@@ -171,6 +171,19 @@ std::string runs_csv_header(const std::vector<std::string>& parameter_columns) {
     return header + ",message\n";
 }
 
+namespace {
+
+// Whether `dir` holds anything besides the lock its writer takes before creating the study.
+bool holds_other_files(const fs::path& dir) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec))
+        if (entry.path().filename() != StudyFiles::lock)
+            return true;
+    return false;
+}
+
+} // namespace
+
 bool is_study_directory(const fs::path& dir) {
     std::error_code ec;
     if (fs::exists(dir / StudyFiles::marker, ec))
@@ -185,7 +198,7 @@ StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string conte
     : dir_(std::move(dir)), parameter_columns_(std::move(parameter_columns)), keys_(std::move(keys)),
       unkeyed_suffix_(" of study " + std::to_string(std::hash<std::string>{}(study_text))) {
     std::error_code ec;
-    if (fs::is_directory(dir_, ec) && !fs::is_empty(dir_, ec) && !is_study_directory(dir_))
+    if (fs::is_directory(dir_, ec) && holds_other_files(dir_) && !is_study_directory(dir_))
         throw std::runtime_error(dir_.string() + ": is not empty and is not a mhbench study (it has no " +
                                  StudyFiles::marker +
                                  "); its files are left alone: choose a new or empty --out");

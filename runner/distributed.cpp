@@ -1,10 +1,10 @@
 #include "runner/distributed.hpp"
 
-#include <charconv>
 #include <cstdlib>
 #include <memory>
 #include <stdexcept>
-#include <string_view>
+
+#include "runner/launcher_environment.hpp"
 
 #if MHB_WITH_MPI
 #include "runner/mpi/mpi_runner.hpp"
@@ -12,16 +12,6 @@
 
 namespace mhb {
 namespace {
-
-int environment_count(const char* name) {
-    const char* text = std::getenv(name);
-    if (text == nullptr)
-        return 0;
-    const std::string_view value(text);
-    int count = 0;
-    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), count);
-    return error == std::errc() && end == value.data() + value.size() && count > 0 ? count : 0;
-}
 
 #if MHB_WITH_MPI
 // The MPI session of this process: started on first use under a launcher, ended at exit.
@@ -49,8 +39,7 @@ Distributed* distributed() {
 } // namespace
 
 int launcher_process_count() {
-    const int open_mpi = environment_count("OMPI_COMM_WORLD_SIZE");
-    return open_mpi > 0 ? open_mpi : environment_count("PMI_SIZE");
+    return launched_processes(std::getenv).count;
 }
 
 bool built_with_mpi() {
@@ -66,11 +55,12 @@ int distributed_rank() {
     const Distributed* d = distributed();
     return d != nullptr ? d->session.rank() : 0;
 #else
-    if (launcher_process_count() > 1)
-        throw std::runtime_error("this mhbench was built without MPI, yet an MPI launcher started " +
-                                 std::to_string(launcher_process_count()) +
-                                 " processes of it, which would all write one study directory: run it "
-                                 "without mpirun, or build it with -DMHB_WITH_MPI=ON (the mpi preset)");
+    if (const LaunchedProcesses launched = launched_processes(std::getenv); launched.count > 1)
+        throw std::runtime_error("this mhbench was built without MPI, yet a launcher started it as one of " +
+                                 std::string(launched.at_least ? "at least " : "") +
+                                 std::to_string(launched.count) + " processes (" + launched.evidence +
+                                 "), which would each run the whole study: run one process (no mpirun, "
+                                 "no srun -n N), or build it with -DMHB_WITH_MPI=ON (the mpi preset)");
     return 0;
 #endif
 }

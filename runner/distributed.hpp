@@ -15,8 +15,8 @@
 
 namespace mhb {
 
-// The process count an MPI launcher (Open MPI's mpirun: OMPI_COMM_WORLD_SIZE; MPICH, Slurm's
-// srun: PMI_SIZE) gave this process in its environment, or 0 when none started it.
+// The process count a launcher (mpirun, mpiexec, srun -n N: runner/launcher_environment.hpp)
+// gave this process in its environment, or 0 when none started it.
 int launcher_process_count();
 inline bool launched_under_mpi() {
     return launcher_process_count() > 0;

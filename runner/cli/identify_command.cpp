@@ -9,6 +9,7 @@
 // with di/dt) are linear in the parameters and solved exactly; output (output error) is not, so
 // an optimiser is run from several seeds and their spread is reported besides the linearised
 // standard errors.
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <cmath>
 #include <cstdio>
@@ -51,6 +52,12 @@ pmsm::FitnessWeights parse_weights(const std::string& text) {
     }
     if (w.size() != 4)
         throw std::invalid_argument("--weights " + quoted_excerpt(text) + " needs four numbers w1,w2,w3,w4");
+    // Each weight scales one equation's residuals: with all four zero every residual vanishes and
+    // any parameters fit, so the table would be n/a throughout.
+    if (std::all_of(w.begin(), w.end(), [](double v) { return v == 0.0; }))
+        throw std::invalid_argument(
+            "--weights " + quoted_excerpt(text) +
+            ": all four are zero, which leaves nothing to fit; give at least one > 0");
     return {w[0], w[1], w[2], w[3]};
 }
 

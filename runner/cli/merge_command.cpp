@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "results/csv.hpp"
@@ -19,6 +20,7 @@
 #include "runner/shards.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
+#include "runner/study_lock.hpp"
 
 namespace mhb::cli {
 
@@ -138,6 +140,13 @@ int run_merge_command(const std::vector<std::string>& args) {
         }
     }
 
+    std::optional<StudyLock> lock; // one writer of OUT, from before its first byte to its report
+    try {
+        lock.emplace(out, "mhbench merge");
+    } catch (const StudyInUse& e) {
+        std::cerr << "mhbench merge: " << e.what() << "; wait for it or choose another OUT\n";
+        return exit_failure;
+    }
     std::vector<std::string> command_line{"mhbench", "merge"};
     command_line.insert(command_line.end(), args.begin(), args.end());
     std::string context =

@@ -1,10 +1,12 @@
 // `mhbench report DIR`: rebuilds every table, the curve data and the figures of a finished study
 // from its directory alone. Thin: parses the command line, loads the study, calls build_report.
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <cstdlib>
 #include <fcntl.h>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -14,6 +16,7 @@
 #include "results/store.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
+#include "runner/study_lock.hpp"
 
 namespace mhb::cli {
 
@@ -68,6 +71,26 @@ void open_in_browser(const std::filesystem::path& page) {
         ::waitpid(child, nullptr, 0);
 }
 
+// Whether `dir` holds a study's records (finished or not): a report written there would
+// replace some of them (its algorithms.csv is not the study's).
+bool holds_study_records(const std::filesystem::path& dir) {
+    std::error_code ec;
+    for (const char* record :
+         {StudyFiles::marker, StudyFiles::study, StudyFiles::runs, StudyFiles::store, StudyFiles::journal})
+        if (std::filesystem::exists(dir / record, ec))
+            return true;
+    return false;
+}
+
+// Whether `inner` is `outer` or lies below it, symbolic links and ".." resolved.
+bool is_within(const std::filesystem::path& inner, const std::filesystem::path& outer) {
+    std::error_code ec;
+    const std::filesystem::path a = std::filesystem::weakly_canonical(std::filesystem::absolute(inner), ec);
+    const std::filesystem::path b = std::filesystem::weakly_canonical(std::filesystem::absolute(outer), ec);
+    const auto [end_b, at_a] = std::mismatch(b.begin(), b.end(), a.begin(), a.end());
+    return end_b == b.end() || (std::next(end_b) == b.end() && end_b->empty()); // "dir/" ends in ""
+}
+
 } // namespace
 
 int run_report_command(const std::vector<std::string>& args) {
@@ -95,8 +118,10 @@ int run_report_command(const std::vector<std::string>& args) {
         "    every table (sortable by a click on a header) and every figure (inline SVG), a section per\n"
         "    budget when there are several; rebuilt by every report. Its path is printed at the end.\n"
         "The Markdown tables are also printed here.\n\nOptions");
-    visible.add_options()("help,h", "this text")("out", po::value(&out_dir),
-                                                 "report directory (default: DIR/report)")(
+    visible.add_options()("help,h", "this text")(
+        "out", po::value(&out_dir),
+        "report directory (default: DIR/report); never a study directory (refused: the report would "
+        "replace its records), and refused inside DIR while another process writes the study")(
         "reference", po::value(&reference),
         "algorithm the tests compare against: a full spec or a name of the study (default: itlbo, else the "
         "first algorithm)")("alpha", po::value(&alpha)->default_value(0.05, "0.05"),
@@ -142,11 +167,29 @@ int run_report_command(const std::vector<std::string>& args) {
             options.formats.insert(f.substr(first, f.find_last_not_of(' ') - first + 1));
     }
     options.plot_script = std::filesystem::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
+    const std::filesystem::path report_dir =
+        out_dir.empty() ? std::filesystem::path(study_dir) / "report" : std::filesystem::path(out_dir);
+    if (holds_study_records(report_dir)) {
+        std::cerr << "mhbench report: --out " << report_dir.string()
+                  << " is a study directory, and a report would replace its records; leave --out out "
+                     "(the report goes to DIR/report) or name a directory of its own\n";
+        return exit_failure;
+    }
+    // Reading needs no lock (a study's files are each replaced whole, runs.csv last), but writing
+    // into the study does: the process that holds it may replace or remove what is written.
+    std::optional<StudyLock> lock;
+    if (std::filesystem::is_directory(study_dir) && is_within(report_dir, study_dir)) {
+        try {
+            lock.emplace(study_dir, "mhbench report");
+        } catch (const StudyInUse& e) {
+            std::cerr << "mhbench report: " << e.what()
+                      << "; wait for it, or give --out a directory outside the study\n";
+            return exit_failure;
+        }
+    }
     const StudyData study = load_study(study_dir);
     // A report that fails prints nothing and leaves no report folder it made (its files are each
     // written whole, so a folder that existed holds whole files only).
-    const std::filesystem::path report_dir =
-        out_dir.empty() ? study.directory / "report" : std::filesystem::path(out_dir);
     std::error_code ec;
     const bool existed = std::filesystem::exists(report_dir, ec);
     std::ostringstream printed;

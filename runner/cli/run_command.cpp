@@ -32,6 +32,7 @@
 #include "runner/shards.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"
+#include "runner/study_lock.hpp"
 #include "runner/study_options.hpp"
 #include "runner/study_presets.hpp"
 
@@ -129,7 +130,9 @@ void print_help(const po::options_description& options) {
            "report uses paired tests. Results are identical for any --threads. Every finished run is\n"
            "kept in DIR/store.bin: after Ctrl-C or a kill the same command resumes, and a larger\n"
            "study into the same --out (more runs, algorithms, problems, budgets) computes only the\n"
-           "runs it lacks. Under `mpirun -np N` (an MPI build) the runs spread over the ranks.\n\n"
+           "runs it lacks. Under `mpirun -np N` (an MPI build) the runs spread over the ranks.\n"
+           "One process writes a directory at a time: while DIR/.mhbench.lock is held, another\n"
+           "run, merge or report into DIR is refused with the holder's pid and host.\n\n"
         << options << "\nStudy presets (--study NAME; the files are in scripts/studies/):\n"
         << preset_lines()
         << "\nExamples:\n"
@@ -301,6 +304,15 @@ int run_run_command(const std::vector<std::string>& args) {
         worker.threads = threads;
         worker.stop = &stop_requested;
         return run_study_anywhere(*prepared, nullptr, worker).interrupted ? exit_interrupted : exit_ok;
+    }
+    // One writer per directory: taken before the directory is read, so that what is checked
+    // below is what this process then writes to.
+    std::optional<StudyLock> lock;
+    try {
+        lock.emplace(dir, "mhbench run");
+    } catch (const StudyInUse& e) {
+        std::cerr << "mhbench run: " << e.what() << "; wait for it or use another --out\n";
+        return exit_failure;
     }
     std::vector<std::string> command_line{"mhbench", "run"};
     command_line.insert(command_line.end(), args.begin(), args.end());

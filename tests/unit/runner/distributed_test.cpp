@@ -97,6 +97,22 @@ TEST(Distributed, WithoutMpiSeveralLaunchedProcessesAreRefused) {
     }
     const ScopedEnvironment alone("OMPI_COMM_WORLD_SIZE", "1"); // `mpirun -np 1` is one process
     EXPECT_EQ(distributed_rank(), 0);
+    {
+        // `srun -n 4` sets no MPI variable without an MPI plugin: Slurm's own say it.
+        const ScopedEnvironment tasks("SLURM_STEP_NUM_TASKS", "4");
+        try {
+            (void)distributed_rank();
+            ADD_FAILURE() << "srun -n 4 not refused";
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find("one of 4 processes (SLURM_STEP_NUM_TASKS=4)"),
+                      std::string::npos)
+                << e.what();
+            EXPECT_NE(std::string(e.what()).find("run one process"), std::string::npos) << e.what();
+        }
+    }
+    const ScopedEnvironment batch_script("SLURM_NTASKS", "4"); // `sbatch -n 4`'s script runs once
+    const ScopedEnvironment first_task("SLURM_PROCID", "0");
+    EXPECT_EQ(distributed_rank(), 0);
 }
 
 } // namespace
