@@ -146,9 +146,12 @@ int run_merge_command(const std::vector<std::string>& args) {
     for (const auto& [index, shard] : by_index)
         context += " " + shard->dir.string();
     context += "\nshards = " + std::to_string(first.spec.count) + '\n';
-    StudyWriter writer(out, first.data.study_text, context + context_data_files(prepared.problems),
-                       prepared.parameter_columns, vm["overwrite"].as<bool>(), prepared.algorithms,
-                       study_run_keys(prepared));
+    std::string shard_sessions;
+    for (const auto& [index, shard] : by_index)
+        shard_sessions += context_sessions(shard->data.context_text);
+    context = context_with_history(context + context_data_files(prepared.problems), shard_sessions);
+    StudyWriter writer(out, first.data.study_text, context, prepared.parameter_columns,
+                       vm["overwrite"].as<bool>(), prepared.algorithms, study_run_keys(prepared));
     for (const auto& [index, shard] : by_index)
         for (const auto& record : shard->data.runs) {
             const auto wall = shard->data.wall_seconds.find(record.run_id);

@@ -196,7 +196,8 @@ std::vector<BadInput> catalogue() {
         {study_copy, "run --study smoke --runs 2 --evaluations 200 --seed 5 --out s", 1,
          says({"mhbench run: s: 2 stored runs would change:",
                "  seed = 5, but the stored runs were made with seed = 1",
-               "pass --overwrite to discard the stored runs and start again, or choose another --out"})},
+               "pass --recompute-changed to compute these runs again (keeping every other stored run), "
+                  "--overwrite to discard the stored runs and start again, or choose another --out"})},
         {"", "run --algorithms lshade:r_ninit=1 --problems sphere:dim=2 --evaluations 100 --runs 2 --quiet --out s", 1,
          mentions("2 of 2 runs failed (all of them)"), "s"},
 
