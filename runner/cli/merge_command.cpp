@@ -1,7 +1,8 @@
 // `mhbench merge OUT DIR...`: joins the directories of the shards of one study
 // (`mhbench run --shard i/n`) into the directory one process would have written — the records
 // byte for byte — and builds its report. Every shard is checked first: finished, of the same
-// study, each of 1..n exactly once, holding exactly the runs its index is given.
+// study, each of 1..n exactly once, holding exactly the runs its index is given, having read the
+// same data (by SHA-256) with the same build (version, commit, dirty flag).
 #include <boost/program_options.hpp>
 #include <filesystem>
 #include <iostream>
@@ -14,6 +15,7 @@
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/context.hpp"
+#include "runner/data_provenance.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/run_identity.hpp"
 #include "runner/shards.hpp"
@@ -50,6 +52,30 @@ Shard read_shard(const fs::path& dir) {
     }
     s.data = load_study(dir); // says so when the shard is unfinished
     return s;
+}
+
+// One line per data file the shards read with different contents (from each other, or from the
+// file as it is now, whose content the merged runs' identities will name) and per shard built
+// otherwise than the first: study.ini names a file by its path, which says nothing of its content.
+std::vector<std::string> provenance_errors(const std::map<int, const Shard*>& shards,
+                                           const PreparedStudy& study) {
+    const Shard& first = *shards.begin()->second;
+    const DataFileHashes first_files = recorded_data_files(first.data.context_text);
+    const std::string first_build = recorded_build(first.data.context_text);
+    std::vector<std::string> errors;
+    for (const auto& [index, shard] : shards) {
+        const auto differences = data_file_differences(recorded_data_files(shard->data.context_text),
+                                                       shard->dir.string(), first_files, first.dir.string());
+        errors.insert(errors.end(), differences.begin(), differences.end());
+        const std::string build = recorded_build(shard->data.context_text);
+        if (build != first_build)
+            errors.push_back(shard->dir.string() + ": was computed by " + build + ", " + first.dir.string() +
+                             " by " + first_build);
+    }
+    if (!errors.empty())
+        return errors;
+    return data_file_differences(recorded_data_files(context_data_files(study.problems)), "the file now",
+                                 first_files, first.dir.string());
 }
 
 } // namespace
@@ -136,6 +162,14 @@ int run_merge_command(const std::vector<std::string>& args) {
                       << " (was it run by another mhbench version?)\n";
             return exit_failure;
         }
+    }
+
+    if (const auto mixed = provenance_errors(by_index, prepared); !mixed.empty()) {
+        for (const auto& e : mixed)
+            std::cerr << "mhbench merge: " << e << '\n';
+        std::cerr << "mhbench merge: the shards of a study must read the same data with the same build; run "
+                     "the differing shards again\n";
+        return exit_failure;
     }
 
     std::vector<std::string> command_line{"mhbench", "merge"};

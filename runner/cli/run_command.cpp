@@ -297,6 +297,15 @@ int run_run_command(const std::vector<std::string>& args) {
         std::cout << dry_run_text(*prepared, dir, threads);
         return exit_ok;
     }
+    // Under mpirun, each rank read its own copy of the data: all must have read the same content.
+    if (const auto differences = distributed_data_differences(*prepared); !differences.empty()) {
+        if (distributed_rank() == 0) {
+            for (const auto& line : differences)
+                std::cerr << "mhbench run: " << line << '\n';
+            std::cerr << "mhbench run: every rank must read the same data files; nothing was run\n";
+        }
+        return exit_failure;
+    }
     // Under mpirun, rank 0 alone touches the directory, prints and reports; the other ranks run
     // what it hands them (runner/distributed.hpp).
     if (distributed_rank() != 0) {
