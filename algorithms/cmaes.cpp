@@ -193,6 +193,7 @@ private:
 void register_cmaes(AlgorithmRegistry& registry) {
     registry.add(
         {"cmaes",
+         1,
          "CMA-ES (mu/mu_w, lambda) with rank-one and rank-mu updates and CSA, optional IPOP restarts; "
          "lambda evaluations per iteration",
          "Hansen (2016), The CMA Evolution Strategy: A Tutorial, arXiv:1604.00772; IPOP: Auger and Hansen "

@@ -86,6 +86,7 @@ private:
 void register_de(AlgorithmRegistry& registry) {
     registry.add(
         {"de",
+         1,
          "differential evolution DE/rand/1/bin; NP evaluations per iteration",
          "Storn and Price (1997), J. Global Optim. 11:341-359",
          {ParameterInfo::integer("np", 0, 0, 1000000,

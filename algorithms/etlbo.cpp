@@ -130,6 +130,7 @@ private:
 void register_etlbo(AlgorithmRegistry& registry) {
     registry.add(
         {"etlbo",
+         1,
          "elitist TLBO: teacher and learner phases, elites replace the worst, duplicates mutated; "
          "2 NP (+ duplicates) evaluations per iteration",
          "Rao and Patel (2012), Int. J. Industrial Engineering Computations 3:535-560",

@@ -213,6 +213,7 @@ private:
 void register_itlbo(AlgorithmRegistry& registry) {
     registry.add(
         {"itlbo",
+         1,
          "ITLBO of Li, Wang, Ji (2017): TLBO with tutorial teaching, subject-stepwise learning and "
          "opposition-based mutation, each a switch; about NP (D + 1.1) evaluations per iteration",
          "Li, Wang, Ji (2017), Permanent magnet synchronous motor parameter identification based on improved "

@@ -68,6 +68,7 @@ private:
 void register_jaya(AlgorithmRegistry& registry) {
     registry.add(
         {"jaya",
+         1,
          "Jaya: move towards the best and away from the worst, greedy; NP evaluations per iteration",
          "Rao (2016), Int. J. Industrial Engineering Computations 7:19-34",
          {ParameterInfo::integer("np", 50, 2, 1000000, "population size (50: the ITLBO paper's NP)")},

@@ -208,6 +208,7 @@ private:
 void register_lshade(AlgorithmRegistry& registry) {
     registry.add(
         {"lshade",
+         1,
          "L-SHADE: success-history adaptive DE with archive and linear population reduction (18D -> 4); "
          "N_G evaluations per iteration",
          "Tanabe and Fukunaga (2014), IEEE CEC 2014, pp. 1658-1665",

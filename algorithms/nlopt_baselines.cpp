@@ -195,6 +195,7 @@ private:
 void register_nlopt(AlgorithmRegistry& registry) {
     registry.add(
         {"nlopt",
+         1,
          "NLopt's derivative-free algorithms (CRS2, ISRES, ESCH, DIRECT, MLSL, BOBYQA, Nelder-Mead, Sbplx, "
          "COBYLA...) with an exact budget and random restarts; iteration = iteration_evals evaluations",
          "Johnson, The NLopt nonlinear-optimization package, https://github.com/stevengj/nlopt (v2.7)",

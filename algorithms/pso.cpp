@@ -141,6 +141,7 @@ private:
 void register_pso(AlgorithmRegistry& registry) {
     registry.add(
         {"pso",
+         1,
          "global-best particle swarm optimisation with inertia weight, the settings of Li, Wang, Ji "
          "(2017); NP evaluations per iteration",
          "Kennedy, Eberhart (1995), Proc. ICNN 4:1942-1948; inertia weight: Shi, Eberhart (1998), "

@@ -64,6 +64,7 @@ private:
 void register_random_search(AlgorithmRegistry& registry) {
     registry.add(
         {"random-search",
+         1,
          "pure random search: uniform samples in the box, the best kept; the baseline to beat",
          "Brooks (1958), Oper. Res. 6(2); Rastrigin (1963), Autom. Remote Control 24",
          {ParameterInfo::integer("batch", 50, 1, 1000000000,

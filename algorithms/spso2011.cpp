@@ -133,6 +133,7 @@ private:
 void register_spso2011(AlgorithmRegistry& registry) {
     registry.add(
         {"spso2011",
+         1,
          "Standard PSO 2011: adaptive random topology (K = 3), hypersphere sampling around G; "
          "S evaluations per iteration",
          "Clerc (2012), Standard Particle Swarm Optimisation, hal-00764996; Zambrano-Bigiarini et al. "

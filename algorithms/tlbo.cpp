@@ -98,6 +98,7 @@ private:
 void register_tlbo(AlgorithmRegistry& registry) {
     registry.add(
         {"tlbo",
+         1,
          "teaching-learning-based optimisation: teacher phase then learner phase, greedy, "
          "in place; 2 NP evaluations per iteration",
          "Rao, Savsani, Vakharia (2011), Computer-Aided Design 43(3):303-315",

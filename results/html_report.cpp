@@ -134,6 +134,15 @@ std::string context_section(const HtmlReportContent& content) {
                 facts += "<dt>" + html_escape(label) + "</dt><dd>" + html_escape(v) + "</dd>\n";
                 break;
             }
+    // The history of a resumed study (context.ini's "session" lines): its first and latest session.
+    std::vector<std::string> sessions;
+    for (const auto& [k, v] : pairs)
+        if (k == "session")
+            sessions.push_back(v);
+    if (sessions.size() > 1)
+        facts += "<dt>First session</dt><dd>" + html_escape(sessions.front()) +
+                 "</dd>\n<dt>Latest session (of " + std::to_string(sessions.size()) + ")</dt><dd>" +
+                 html_escape(sessions.back()) + "</dd>\n";
     out += "<dl class=\"context\">\n<dt>Study directory</dt><dd><code>" + html_escape(content.study) +
            "</code></dd>\n" + facts + "</dl>\n";
     out += heading(3, "context.ini");

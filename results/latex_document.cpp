@@ -1,5 +1,8 @@
 #include "results/latex_document.hpp"
 
+#include <string>
+#include <vector>
+
 #include "results/latex_text.hpp"
 
 namespace mhb {
@@ -26,9 +29,11 @@ std::string trim(const std::string& text) {
     return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
 }
 
-// context.ini as a two-column table of key and value (values wrap).
+// context.ini as a two-column table of key and value (values wrap). Of the history of a resumed
+// study ("session" lines, first first), the first and the latest session are shown.
 std::string context_table(const std::string& context, std::string& date) {
     std::string rows;
+    std::vector<std::string> sessions;
     std::size_t start = 0;
     while (start < context.size()) {
         const std::size_t end = std::min(context.find('\n', start), context.size());
@@ -41,8 +46,16 @@ std::string context_table(const std::string& context, std::string& date) {
         const std::string value = trim(line.substr(equals + 1));
         if (key == "date_utc")
             date = value;
-        rows += breakable(key) + " & " + breakable(value) + " \\\\\n";
+        if (key == "session")
+            sessions.push_back(value);
+        else
+            rows += breakable(key) + " & " + breakable(value) + " \\\\\n";
     }
+    if (!sessions.empty())
+        rows += "first session & " + breakable(sessions.front()) + " \\\\\n";
+    if (sessions.size() > 1)
+        rows += "latest session (of " + std::to_string(sessions.size()) + ") & " +
+                breakable(sessions.back()) + " \\\\\n";
     if (rows.empty())
         return "";
     return "\\section*{Study context}\n{\\footnotesize\n"

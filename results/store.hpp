@@ -91,6 +91,10 @@ struct StudyRunKeys {
     std::function<std::pair<std::string, std::string>(std::int64_t run_id)> names;
     // One line saying what differs between a stored run and the wanted one of the same slot.
     std::function<std::string(const RunKey& stored, const RunKey& wanted)> describe_change;
+    // Compute again the runs whose slot holds a stored run of another identity (a new
+    // implementation version, an edited data file), instead of refusing; every other stored run
+    // is kept, and the replaced ones stay in store.bin unused.
+    bool recompute_changed = false;
 };
 
 // An algorithm of the study as the report shows it (algorithms.csv).

@@ -402,7 +402,7 @@ void StudyWriter::check_changes(bool overwrite) {
         }
         return;
     }
-    if (changes.empty() || overwrite)
+    if (changes.empty() || overwrite || keys_->recompute_changed)
         return;
     std::string message = dir_.string() + ": " + std::to_string(changed_runs) + " stored run" +
                           (changed_runs == 1 ? "" : "s") + " would change:";
@@ -411,7 +411,8 @@ void StudyWriter::check_changes(bool overwrite) {
         message += "\n  " + changes[i];
     if (changes.size() > shown)
         message += "\n  and " + std::to_string(changes.size() - shown) + " more";
-    message += "\npass --overwrite to discard the stored runs and start again, or choose another --out";
+    message += "\npass --recompute-changed to compute these runs again (keeping every other stored run), "
+               "--overwrite to discard the stored runs and start again, or choose another --out";
     throw std::runtime_error(message);
 }
 

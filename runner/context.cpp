@@ -3,10 +3,12 @@
 #include <Eigen/Core>
 #include <boost/version.hpp>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <nlopt.h>
 #include <oneapi/tbb/version.h>
 #include <set>
+#include <sstream>
 #include <sys/utsname.h>
 #include <thread>
 #include <unistd.h>
@@ -117,13 +119,45 @@ std::string context_ini(int threads, const std::vector<std::string>& command_lin
     return text;
 }
 
+std::string context_field(const std::string& context_text, const std::string& key) {
+    std::istringstream in(context_text);
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind(key + " = ", 0) == 0)
+            return line.substr(key.size() + 3);
+    return "unknown";
+}
+
+std::string context_sessions(const std::string& context_text) {
+    std::string sessions;
+    std::istringstream in(context_text);
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind(session_key + std::string(" = "), 0) == 0)
+            sessions += line + '\n';
+    if (!sessions.empty() || context_text.find(" = ") == std::string::npos)
+        return sessions;
+    // A context.ini from before histories were kept: its one session, from its fields.
+    const auto value = [&](const char* key) { return context_field(context_text, key); };
+    return std::string(session_key) + " = " + value("date_utc") + " on " + value("hostname") + ", mhbench " +
+           value("version") + " commit " + value("git_commit") + " (dirty: " + value("git_dirty_at_build") +
+           "): " + value("command") + '\n';
+}
+
+std::string context_with_history(const std::string& current, const std::string& earlier_sessions) {
+    return current +
+           "# Every session that wrote into this directory, the first first (the lines above are the "
+           "latest's):\n" +
+           earlier_sessions + context_sessions(current);
+}
+
 std::string context_data_files(const std::vector<std::unique_ptr<Problem>>& problems) {
     std::string text;
     std::set<std::string> seen;
     for (const auto& problem : problems)
         for (const auto& file : problem->data_files())
-            if (seen.insert(file.sha256 + " " + file.path).second)
-                text += "data_file = " + file.sha256 + " " + file.path + '\n';
+            // Absolute, so that shards and ranks started from other directories compare by file.
+            if (const std::string path = std::filesystem::absolute(file.path).lexically_normal().string();
+                seen.insert(file.sha256 + " " + path).second)
+                text += "data_file = " + file.sha256 + " " + path + '\n';
     return text;
 }
 

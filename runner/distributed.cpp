@@ -8,6 +8,7 @@
 
 #if MHB_WITH_MPI
 #include "runner/mpi/mpi_runner.hpp"
+#include "runner/mpi/rank_data_check.hpp"
 #endif
 
 namespace mhb {
@@ -72,6 +73,19 @@ int distributed_rank_count() {
 #else
     return 1;
 #endif
+}
+
+std::vector<std::string> distributed_data_differences(const PreparedStudy& study) {
+#if MHB_WITH_MPI
+    if (Distributed* d = distributed(); d != nullptr && d->session.size() > 1) {
+        std::vector<std::string> differences = rank_data_differences(study, d->session);
+        // Every rank ends without a run: none will wait for rank 0 to release it.
+        d->ran = d->ran || !differences.empty();
+        return differences;
+    }
+#endif
+    (void)study;
+    return {};
 }
 
 std::string distributed_context() {

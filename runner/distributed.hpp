@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "results/store.hpp"
 #include "runner/parallel_runner.hpp"
@@ -32,6 +33,10 @@ bool built_with_mpi();
 int distributed_rank();
 // The number of ranks the runs are spread over: 1 outside MPI.
 int distributed_rank_count();
+// Under MPI (N > 1 ranks), collective: the lines naming each data file that a rank read with
+// another content than rank 0 (runner/mpi/rank_data_check.hpp), to be refused before any run;
+// none when all agree, and outside MPI.
+std::vector<std::string> distributed_data_differences(const PreparedStudy& study);
 // "mpi_ranks = N\n" for context.ini when the runs are spread over N > 1 ranks, else "".
 std::string distributed_context();
 

@@ -2,6 +2,7 @@
 
 #include <map>
 #include <sstream>
+#include <vector>
 
 #include "problems/core/sha256.hpp"
 
@@ -20,9 +21,22 @@ std::map<std::string, std::string> lines_of(const std::string& text) {
     return values;
 }
 
-std::string value_or(const std::map<std::string, std::string>& values, const std::string& key) {
+std::string value_or(const std::map<std::string, std::string>& values, const std::string& key,
+                     const std::string& otherwise = "(none)") {
     const auto found = values.find(key);
-    return found == values.end() ? std::string("(none)") : found->second;
+    return found == values.end() ? otherwise : found->second;
+}
+
+// The fact line of an implementation version. Version 1 adds none, so that the runs stored
+// before versions existed keep their identity; from 2 on it changes every identity.
+std::string version_fact(const std::string& name, const std::vector<int>& versions, std::size_t i) {
+    const int version = i < versions.size() ? versions[i] : 1;
+    return version > 1 ? name + " = " + std::to_string(version) + '\n' : std::string();
+}
+
+// "pso" of "pso:w=0.7".
+std::string component_name(const std::string& spec) {
+    return spec.substr(0, spec.find(':'));
 }
 
 } // namespace
@@ -35,10 +49,13 @@ RunKey run_key(const PreparedStudy& study, std::int64_t run_id) {
     RunKey key;
     key.algorithm = request.algorithm_spec;
     key.problem = request.problem_spec;
-    key.facts =
-        "format = " + std::to_string(store_format_version) + '\n' + "algorithm = " + request.algorithm_spec +
-        '\n' + "problem = " + study.problem_identities[p] + '\n' + "budget = " + request.budget_text + '\n' +
-        "run = " + std::to_string(request.run_index) + '\n' + "seed = " + std::to_string(request.seed) + '\n';
+    key.facts = "format = " + std::to_string(store_format_version) + '\n' +
+                "algorithm = " + request.algorithm_spec + '\n' +
+                version_fact("algorithm version", study.algorithm_versions, a) +
+                "problem = " + study.problem_identities[p] + '\n' +
+                version_fact("problem version", study.problem_versions, p) +
+                "budget = " + request.budget_text + '\n' + "run = " + std::to_string(request.run_index) +
+                '\n' + "seed = " + std::to_string(request.seed) + '\n';
     key.identity = sha256_hex(key.facts);
     const std::string& label =
         a < study.algorithms.size() ? study.algorithms[a].label : request.algorithm_spec;
@@ -75,6 +92,14 @@ std::string describe_run_change(const RunKey& stored, const RunKey& wanted) {
     if (value_or(old_facts, "format") != value_or(new_facts, "format"))
         return "the stored runs have record format " + value_or(old_facts, "format") +
                ", this mhbench writes " + value_or(new_facts, "format");
+    for (const std::string kind : {"algorithm", "problem"}) {
+        const std::string before = value_or(old_facts, kind + " version", "1");
+        const std::string after = value_or(new_facts, kind + " version", "1");
+        if (before != after)
+            return kind + " '" + component_name(value_or(new_facts, kind)) +
+                   "': the stored runs were made by version " + before + ", this mhbench has version " +
+                   after;
+    }
     if (value_or(old_facts, "problem") != value_or(new_facts, "problem")) {
         // A data file's content (its path is the same: the slot matched).
         for (int i = 1;; ++i) {

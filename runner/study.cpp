@@ -143,6 +143,7 @@ void prepare_algorithms(const Study& study, const AlgorithmRegistry& registry, P
                 where_label[label] = canonical;
                 prepared.optimizers.push_back(registry.create(spec));
                 prepared.algorithm_specs.push_back(canonical);
+                prepared.algorithm_versions.push_back(entry.version);
                 prepared.algorithms.push_back({canonical, label, registry.full(spec).canonical()});
                 prepared.study.algorithms.push_back(with_label(canonical, label));
             } catch (const std::exception& e) {
@@ -233,6 +234,7 @@ void prepare_problems(const Study& study, const ProblemRegistry& registry, Prepa
                     where_full[full] = canonical;
                     prepared.problems.push_back(registry.create(one));
                     prepared.problem_specs.push_back(canonical);
+                    prepared.problem_versions.push_back(registry.find(one.name).version);
                     prepared.problem_identities.push_back(
                         content_identity(Spec::parse(canonical), prepared.problems.back()->data_files()));
                 } catch (const std::exception& e) {

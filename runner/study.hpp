@@ -99,6 +99,9 @@ struct PreparedStudy {
     // editing one is noticed).
     std::vector<std::string> problem_identities;
     std::vector<std::string> budget_texts; // budget_text of each budget
+    // The implementation version (Registry Entry::version) of each optimiser and each problem.
+    std::vector<int> algorithm_versions;
+    std::vector<int> problem_versions;
     std::vector<std::unique_ptr<Optimizer>> optimizers;
     std::vector<std::unique_ptr<Problem>> problems;
     // Union of the problems' parameter names, in order of first appearance (runs.csv columns).

@@ -68,6 +68,7 @@ std::string function_help() {
 void register_bbob(ProblemRegistry& registry) {
     registry.add(
         {"bbob",
+         1,
          "COCO's noiseless BBOB suite, 24 functions exact to COCO, by instance number, on [-5, 5]^dim; "
          "f* and x* known",
          "Hansen, Finck, Ros, Auger (2009), Real-parameter black-box optimization benchmarking 2009: "

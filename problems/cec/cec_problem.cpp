@@ -112,6 +112,7 @@ void register_cec(ProblemRegistry& registry) {
     using cec::Suite;
     registry.add(
         {"cec2017",
+         1,
          "the CEC 2017 bound-constrained suite, 30 functions exact to the official code (f=2 is "
          "excluded from the competition), on [-100, 100]^dim; f* = 100 f and x* known",
          "Awad, Ali, Liang, Qu, Suganthan (2016), Problem definitions and evaluation criteria for the "
@@ -123,6 +124,7 @@ void register_cec(ProblemRegistry& registry) {
          factory(Suite::cec2017)});
     registry.add(
         {"cec2022",
+         1,
          "the CEC 2022 bound-constrained suite, 12 functions exact to the official code, on "
          "[-100, 100]^dim; f* = the function's bias and x* known",
          "Kumar, Price, Mohamed, Hadi, Suganthan (2021), Problem definitions and evaluation criteria "

@@ -23,6 +23,11 @@ public:
 
     struct Entry {
         std::string name;
+        // The implementation version: bumped whenever what it computes changes (a fix, a new
+        // default), so that a study never mixes stored runs of two versions. It joins the identity
+        // of every run only from 2 on, so that runs stored before versions existed (version 1)
+        // keep theirs. tests/data/implementation_versions.csv pins each version's numbers.
+        int version = 1;
         std::string summary;   // one line for `mhbench list`
         std::string reference; // the paper (or library) it implements
         std::vector<ParameterInfo> parameters;

@@ -32,6 +32,7 @@ struct ClassicFunction {
     Eigen::Index min_dimension = 1;
     bool noisy = false; // adds deterministic uniform noise (the quartic function)
     ClassicEvaluator (*bind)(Eigen::Index dimension) = nullptr;
+    int version = 1; // its implementation version (problems/core/registry.hpp)
 };
 
 // The unimodal ones (classic_unimodal.cpp) and the multimodal ones (classic_multimodal.cpp).

@@ -171,7 +171,7 @@ std::vector<std::string> centre_bias_problem_specs(Eigen::Index dimension, std::
 
 void register_classic_functions(ProblemRegistry& registry) {
     for (const ClassicFunction& f : classic_functions()) {
-        registry.add({f.name, f.summary, f.reference, classic_parameters(f),
+        registry.add({f.name, f.version, f.summary, f.reference, classic_parameters(f),
                       [&f](const ParameterValues& p) -> std::unique_ptr<Problem> {
                           ClassicOptions o;
                           o.dimension = static_cast<Eigen::Index>(p.integer("dim"));

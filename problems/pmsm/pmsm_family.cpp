@@ -209,6 +209,7 @@ std::unique_ptr<Problem> make_pmsm(const ParameterValues& p) {
 void register_pmsm(ProblemRegistry& registry) {
     registry.add(
         {"pmsm",
+         1,
          "PMSM identification of Rs, Ld, Lq, psi [, Vdt] from dq data: steady (eq. 11), dynamic (di/dt) or "
          "output-error model",
          "Li, Wang and Ji (2017), PMSM parameter identification based on improved TLBO",

@@ -23,7 +23,8 @@ template <class Product>
 void print_registry(std::ostream& out, const char* title, const Registry<Product>& registry) {
     out << title << " (" << registry.entries().size() << ")\n";
     for (const auto& entry : registry.entries()) {
-        out << '\n' << "  " << entry.name << "\n      " << entry.summary << '\n';
+        out << '\n'
+            << "  " << entry.name << " (version " << entry.version << ")\n      " << entry.summary << '\n';
         if (!entry.reference.empty())
             out << "      reference: " << entry.reference << '\n';
         if (entry.parameters.empty()) {

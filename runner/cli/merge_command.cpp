@@ -1,7 +1,8 @@
 // `mhbench merge OUT DIR...`: joins the directories of the shards of one study
 // (`mhbench run --shard i/n`) into the directory one process would have written — the records
 // byte for byte — and builds its report. Every shard is checked first: finished, of the same
-// study, each of 1..n exactly once, holding exactly the runs its index is given.
+// study, each of 1..n exactly once, holding exactly the runs its index is given, having read the
+// same data (by SHA-256) with the same build (version, commit, dirty flag).
 #include <boost/program_options.hpp>
 #include <filesystem>
 #include <iostream>
@@ -15,6 +16,7 @@
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/context.hpp"
+#include "runner/data_provenance.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/run_identity.hpp"
 #include "runner/shards.hpp"
@@ -52,6 +54,30 @@ Shard read_shard(const fs::path& dir) {
     }
     s.data = load_study(dir); // says so when the shard is unfinished
     return s;
+}
+
+// One line per data file the shards read with different contents (from each other, or from the
+// file as it is now, whose content the merged runs' identities will name) and per shard built
+// otherwise than the first: study.ini names a file by its path, which says nothing of its content.
+std::vector<std::string> provenance_errors(const std::map<int, const Shard*>& shards,
+                                           const PreparedStudy& study) {
+    const Shard& first = *shards.begin()->second;
+    const DataFileHashes first_files = recorded_data_files(first.data.context_text);
+    const std::string first_build = recorded_build(first.data.context_text);
+    std::vector<std::string> errors;
+    for (const auto& [index, shard] : shards) {
+        const auto differences = data_file_differences(recorded_data_files(shard->data.context_text),
+                                                       shard->dir.string(), first_files, first.dir.string());
+        errors.insert(errors.end(), differences.begin(), differences.end());
+        const std::string build = recorded_build(shard->data.context_text);
+        if (build != first_build)
+            errors.push_back(shard->dir.string() + ": was computed by " + build + ", " + first.dir.string() +
+                             " by " + first_build);
+    }
+    if (!errors.empty())
+        return errors;
+    return data_file_differences(recorded_data_files(context_data_files(study.problems)), "the file now",
+                                 first_files, first.dir.string());
 }
 
 } // namespace
@@ -140,6 +166,14 @@ int run_merge_command(const std::vector<std::string>& args) {
         }
     }
 
+    if (const auto mixed = provenance_errors(by_index, prepared); !mixed.empty()) {
+        for (const auto& e : mixed)
+            std::cerr << "mhbench merge: " << e << '\n';
+        std::cerr << "mhbench merge: the shards of a study must read the same data with the same build; run "
+                     "the differing shards again\n";
+        return exit_failure;
+    }
+
     std::optional<StudyLock> lock; // one writer of OUT, from before its first byte to its report
     try {
         lock.emplace(out, "mhbench merge");
@@ -147,6 +181,7 @@ int run_merge_command(const std::vector<std::string>& args) {
         std::cerr << "mhbench merge: " << e.what() << "; wait for it or choose another OUT\n";
         return exit_failure;
     }
+
     std::vector<std::string> command_line{"mhbench", "merge"};
     command_line.insert(command_line.end(), args.begin(), args.end());
     std::string context =
@@ -155,9 +190,12 @@ int run_merge_command(const std::vector<std::string>& args) {
     for (const auto& [index, shard] : by_index)
         context += " " + shard->dir.string();
     context += "\nshards = " + std::to_string(first.spec.count) + '\n';
-    StudyWriter writer(out, first.data.study_text, context + context_data_files(prepared.problems),
-                       prepared.parameter_columns, vm["overwrite"].as<bool>(), prepared.algorithms,
-                       study_run_keys(prepared));
+    std::string shard_sessions;
+    for (const auto& [index, shard] : by_index)
+        shard_sessions += context_sessions(shard->data.context_text);
+    context = context_with_history(context + context_data_files(prepared.problems), shard_sessions);
+    StudyWriter writer(out, first.data.study_text, context, prepared.parameter_columns,
+                       vm["overwrite"].as<bool>(), prepared.algorithms, study_run_keys(prepared));
     for (const auto& [index, shard] : by_index)
         for (const auto& record : shard->data.runs) {
             const auto wall = shard->data.wall_seconds.find(record.run_id);

@@ -106,6 +106,10 @@ po::options_description make_options() {
         ("overwrite", po::bool_switch(),
          "empty the study store in --out and do every run again (needed when a data file, labelled "
          "algorithm or seed changed under stored runs)")
+        ("recompute-changed", po::bool_switch(),
+         "compute again the stored runs that something changed under (an algorithm's or problem's "
+         "implementation version, a data file, a labelled algorithm, the seed) and keep every other "
+         "stored run; without it such a study is refused")
         ("progress", po::bool_switch(), "draw the progress bar even when stderr is not a terminal")
         ("progress-interval", po::value<double>()->default_value(10.0, "10"),
          "seconds between the plain progress lines written when stderr is not a terminal (batch logs)")
@@ -296,6 +300,15 @@ int run_run_command(const std::vector<std::string>& args) {
         std::cout << dry_run_text(*prepared, dir, threads);
         return exit_ok;
     }
+    // Under mpirun, each rank read its own copy of the data: all must have read the same content.
+    if (const auto differences = distributed_data_differences(*prepared); !differences.empty()) {
+        if (distributed_rank() == 0) {
+            for (const auto& line : differences)
+                std::cerr << "mhbench run: " << line << '\n';
+            std::cerr << "mhbench run: every rank must read the same data files; nothing was run\n";
+        }
+        return exit_failure;
+    }
     // Under mpirun, rank 0 alone touches the directory, prints and reports; the other ranks run
     // what it hands them (runner/distributed.hpp).
     if (distributed_rank() != 0) {
@@ -341,8 +354,15 @@ int run_run_command(const std::vector<std::string>& args) {
         context_ini(threads, command_line) + distributed_context() + context_data_files(prepared->problems);
     if (shard)
         context += "shard = " + shard_text(*shard) + '\n';
+    // The sessions that wrote the stored runs stay on record, unless those runs are discarded.
+    const bool resumed = !vm["overwrite"].as<bool>() && std::filesystem::exists(dir / StudyFiles::store) &&
+                         std::filesystem::exists(dir / StudyFiles::context);
+    context = context_with_history(
+        context, resumed ? context_sessions(read_whole_file(dir / StudyFiles::context)) : "");
+    StudyRunKeys keys = study_run_keys(*prepared);
+    keys.recompute_changed = vm["recompute-changed"].as<bool>();
     StudyWriter writer(dir, study_ini(prepared->study), context, prepared->parameter_columns,
-                       vm["overwrite"].as<bool>(), prepared->algorithms, study_run_keys(*prepared));
+                       vm["overwrite"].as<bool>(), prepared->algorithms, std::move(keys));
     if (shard)
         write_file_atomically(shard_file, shard_line);
     else

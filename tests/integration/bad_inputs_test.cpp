@@ -197,7 +197,8 @@ std::vector<BadInput> catalogue() {
         {study_copy, "run --study smoke --runs 2 --evaluations 200 --seed 5 --out s", 1,
          says({"mhbench run: s: 2 stored runs would change:",
                "  seed = 5, but the stored runs were made with seed = 1",
-               "pass --overwrite to discard the stored runs and start again, or choose another --out"})},
+               "pass --recompute-changed to compute these runs again (keeping every other stored run), "
+                  "--overwrite to discard the stored runs and start again, or choose another --out"})},
         {"", "run --algorithms lshade:r_ninit=1 --problems sphere:dim=2 --evaluations 100 --runs 2 --quiet --out s", 1,
          mentions("2 of 2 runs failed (all of them)"), "s"},
 
@@ -370,6 +371,10 @@ std::vector<BadInput> catalogue() {
         {study_copy, "(trap '' XFSZ; ulimit -f 1; mhbench report s --no-figures)", 1,
          one_line(": cannot be written (File too large)")},
 
+        // ---- merge
+        {"cp -r $F/shard1 s1 && cp -r $F/shard2 s2", "merge m s1 s2 --no-report", 1,
+         mentions("/drive.csv: sha256 ")}, // the file and both hashes (tests/integration/shards_test.cpp)
+
         // ---- list
         {"", "list nothing", 2, says({"mhbench list: unknown list 'nothing'; known: algorithms, problems, studies"})},
         {"", "list --bogus", 2, says({"mhbench list: unrecognised option '--bogus' (see mhbench list --help)"})},
@@ -444,6 +449,14 @@ protected:
             "cd '" + fixtures.string() + "' && " + cli +
             " run --study smoke --runs 2 --evaluations 200 --no-report --quiet --out study");
         ASSERT_EQ(study.exit_code, 0) << study.err;
+        // Two shards of one study that read two contents of drive.csv (regenerated in between).
+        const std::string shard = cli + " run --algorithms pso --problems pmsm:data=drive.csv --iterations 2 "
+                                        "--runs 2 --no-report --quiet --shard ";
+        const CliResult shards = mhb::testing_cli::run_shell(
+            "cd '" + fixtures.string() + "' && " + cli + " simulate --out drive.csv && " + shard +
+            "1/2 --out shard1 && " + cli + " simulate --load 3 --out drive.csv && " + shard +
+            "2/2 --out shard2");
+        ASSERT_EQ(shards.exit_code, 0) << shards.err;
     }
 };
 

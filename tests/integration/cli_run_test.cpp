@@ -14,6 +14,7 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "cli_harness.hpp"
 #include "problems/problem_registry.hpp"
+#include "runner/context.hpp"
 #include "runner/study_presets.hpp"
 
 namespace {
@@ -224,11 +225,41 @@ TEST(CliRun, AFinishedStudyRefusesAChangedSeedUnlessOverwriteIsGiven) {
               (std::vector<std::string>{
                   "mhbench run: " + dir.string() + ": 2 stored runs would change:",
                   "  seed = 5, but the stored runs were made with seed = 1",
-                  "pass --overwrite to discard the stored runs and start again, or choose another --out"}));
+                  "pass --recompute-changed to compute these runs again (keeping every other stored run), "
+                  "--overwrite to discard the stored runs and start again, or choose another --out"}));
     EXPECT_EQ(read_text(dir / "runs.csv"), runs); // untouched
     ASSERT_EQ(mhbench(args + " --seed 5 --overwrite").exit_code, 0);
     EXPECT_NE(read_text(dir / "runs.csv"), runs);
     EXPECT_NE(read_text(dir / "study.ini").find("seed = 5\n"), std::string::npos);
+}
+
+// context.ini keeps every session that wrote into the directory; the report shows the first and
+// the latest.
+TEST(CliRun, AnExtendedStudyKeepsTheHistoryOfItsSessions) {
+    const fs::path dir = fresh("history");
+    const std::string args = "run --algorithms random-search --problems sphere:dim=2 --iterations 3 --out " +
+                             dir.string() + " --no-figures --quiet --runs ";
+    ASSERT_EQ(mhbench(args + "2").exit_code, 0);
+    const Result extended = mhbench(args + "3");
+    ASSERT_EQ(extended.exit_code, 0) << extended.err;
+    const std::string context = read_text(dir / "context.ini");
+    std::vector<std::string> sessions;
+    for (const auto& line : lines_of(context))
+        if (line.rfind("session = ", 0) == 0)
+            sessions.push_back(line);
+    ASSERT_EQ(sessions.size(), 2u) << context;
+    EXPECT_TRUE(sessions[0].ends_with("--runs 2")) << sessions[0];
+    EXPECT_TRUE(sessions[1].ends_with("--runs 3")) << sessions[1];
+    EXPECT_NE(context.find("command = mhbench " + args + "3\n"), std::string::npos) << context;
+    const std::string html = read_text(dir / "report" / "index.html");
+    EXPECT_NE(html.find("<dt>First session</dt>"), std::string::npos);
+    EXPECT_NE(html.find("<dt>Latest session (of 2)</dt>"), std::string::npos);
+    const std::string tex = read_text(dir / "report" / "report.tex");
+    EXPECT_NE(tex.find("first session &"), std::string::npos);
+    EXPECT_NE(tex.find("latest session (of 2) &"), std::string::npos);
+    // --overwrite discards the runs, and with them the sessions that made them.
+    ASSERT_EQ(mhbench(args + "2 --overwrite --no-report").exit_code, 0);
+    EXPECT_EQ(lines_of(mhb::context_sessions(read_text(dir / "context.ini"))).size(), 1u);
 }
 
 TEST(CliRun, InterruptKeepsFinishedRunsAndTheSameCommandResumes) {
@@ -281,6 +312,11 @@ TEST(CliList, ListsRandomSearchWithItsParameter) {
             found = true;
     EXPECT_TRUE(found) << r.out;
     EXPECT_EQ(r.out.find("Problems"), std::string::npos); // only what was asked for
+    // Each entry's implementation version, which joins its runs' identities.
+    EXPECT_NE(r.out.find("\n  random-search (version " +
+                         std::to_string(mhb::builtin_algorithms().find("random-search").version) + ")\n"),
+              std::string::npos)
+        << r.out;
 
     const Result all = mhbench("list");
     ASSERT_EQ(all.exit_code, 0);

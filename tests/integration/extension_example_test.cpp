@@ -67,6 +67,7 @@ TEST(ExtensionExample, OwnProblemAndOptimiserRunInAStudyBesideBuiltInOnes) {
     mhb::register_builtin_algorithms(algorithms);
     algorithms.add(
         {"one-plus-one",
+         1,
          "(1+1)-ES with a fixed Gaussian step",
          "Rechenberg (1973)",
          {mhb::ParameterInfo::real("step", 0.1, 0.0, 1e6, "standard deviation of the step").open_below()},
@@ -76,6 +77,7 @@ TEST(ExtensionExample, OwnProblemAndOptimiserRunInAStudyBesideBuiltInOnes) {
     mhb::ProblemRegistry problems("problem");
     mhb::register_builtin_problems(problems);
     problems.add({"booth",
+                  1,
                   "Booth's function, f* = 0 at (1, 3)",
                   "Jamil, Yang (2013), test function 12",
                   {},

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "cli_harness.hpp"
+#include "problems/core/sha256.hpp"
 #include "runner/shards.hpp"
 #include "runner/study.hpp"
 
@@ -131,6 +132,51 @@ TEST(Shards, MergeRefusesOtherStudiesDuplicatesMissingAndUnfinishedShards) {
 } // namespace
 
 namespace {
+
+// The case: shard 1/2 on drive.csv, the file regenerated, shard 2/2, merge. study.ini names
+// the same path for both; the hashes the shards recorded tell them apart.
+TEST(Shards, MergeRefusesShardsThatReadDifferentDataOrWereBuiltDifferently) {
+    const fs::path data = fresh("drive.csv");
+    ASSERT_EQ(run_mhbench("simulate --out " + data.string()).exit_code, 0);
+    const std::string old_hash = mhb::sha256_hex(read_text(data));
+    const std::string study = "--algorithms pso --problems pmsm:data=" + data.string() +
+                              " --iterations 3 --runs 2 --quiet --no-report --out ";
+    const fs::path s1 = fresh("data1");
+    const fs::path s2 = fresh("data2");
+    ASSERT_EQ(run_mhbench("run " + study + s1.string() + " --shard 1/2").exit_code, 0);
+    ASSERT_EQ(run_mhbench("simulate --load 3 --out " + data.string()).exit_code, 0);
+    const std::string new_hash = mhb::sha256_hex(read_text(data));
+    ASSERT_EQ(run_mhbench("run " + study + s2.string() + " --shard 2/2").exit_code, 0);
+    const fs::path merged = fresh("data_merged");
+    const auto mixed = run_mhbench("merge " + merged.string() + " " + s1.string() + " " + s2.string());
+    EXPECT_EQ(mixed.exit_code, 1);
+    EXPECT_EQ(mixed.err, "mhbench merge: " + fs::absolute(data).lexically_normal().string() + ": sha256 " +
+                             new_hash + " in " + s2.string() + ", sha256 " + old_hash + " in " + s1.string() +
+                             "\nmhbench merge: the shards of a study must read the same data with the same "
+                             "build; run the differing shards again\n");
+    EXPECT_FALSE(fs::exists(merged));
+
+    // Shard 1/2 again on today's file: the shards agree, but the build recorded differs.
+    ASSERT_EQ(run_mhbench("run " + study + s1.string() + " --shard 1/2 --overwrite").exit_code, 0);
+    std::string context = read_text(s1 / "context.ini");
+    const auto commit = context.find("git_commit = ");
+    context.replace(commit, context.find('\n', commit) - commit, "git_commit = 0123abcd");
+    std::ofstream(s1 / "context.ini", std::ios::trunc) << context;
+    const auto other_build = run_mhbench("merge " + merged.string() + " " + s1.string() + " " + s2.string());
+    EXPECT_EQ(other_build.exit_code, 1);
+    EXPECT_NE(other_build.err.find("mhbench merge: " + s2.string() + ": was computed by mhbench "),
+              std::string::npos)
+        << other_build.err;
+    EXPECT_NE(other_build.err.find(", " + s1.string() + " by mhbench "), std::string::npos)
+        << other_build.err;
+    EXPECT_NE(other_build.err.find(" commit 0123abcd"), std::string::npos) << other_build.err;
+
+    // The same build and data on both: merged.
+    ASSERT_EQ(run_mhbench("run " + study + s1.string() + " --shard 1/2 --overwrite").exit_code, 0);
+    const auto joined =
+        run_mhbench("merge " + merged.string() + " " + s1.string() + " " + s2.string() + " --no-report");
+    EXPECT_EQ(joined.exit_code, 0) << joined.err;
+}
 
 TEST(Shards, TheSlurmExampleRunsEveryTaskAndMerges) {
     const fs::path dir = fresh("slurm");

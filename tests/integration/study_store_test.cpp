@@ -109,7 +109,8 @@ TEST(StudyStore, ChangesUnderStoredRunsAreRefusedNamingTheChange) {
     ASSERT_EQ(run_mhbench(args).exit_code, 0);
     const std::string runs = read_text(dir / "runs.csv");
     const std::string refusal_end =
-        "pass --overwrite to discard the stored runs and start again, or choose another --out";
+        "pass --recompute-changed to compute these runs again (keeping every other stored run), "
+        "--overwrite to discard the stored runs and start again, or choose another --out";
 
     // The data file replaced behind the same path.
     const fs::path saved = fresh("drive.csv.saved");

@@ -1,7 +1,8 @@
 // `mpirun -np 2 mhbench run` (MHB_MPIRUN) writes the study directory `mhbench run` writes in one
 // process, runs, curves, checkpoints and trajectories byte for byte, prints its summary once and
 // records the rank count in context.ini; it finishes a study a one-process run left interrupted;
-// and when rank 0 refuses the directory every rank ends, without a hang.
+// when rank 0 refuses the directory every rank ends, without a hang; and ranks that read different
+// contents of a data file are refused before any run.
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -100,6 +101,32 @@ TEST(MpiCli, WhenRankZeroRefusesTheDirectoryEveryRankEnds) {
     EXPECT_EQ(r.out.find("study finished"), std::string::npos) << r.out;
     EXPECT_EQ(read_text(dir / "notes.txt"), "mine\n");
     EXPECT_FALSE(fs::exists(dir / "runs.csv"));
+}
+
+// Each rank reads its own copy of a data file (on a cluster, each node's): here one path,
+// /proc/self/cwd/drive.csv, that is a different file in each rank's working directory.
+TEST(MpiCli, RanksThatReadDifferentDataAreRefusedBeforeAnyRun) {
+    const fs::path a = fresh("data_a");
+    const fs::path b = fresh("data_b");
+    fs::create_directories(a);
+    fs::create_directories(b);
+    ASSERT_EQ(run_mhbench("simulate --out " + (a / "drive.csv").string()).exit_code, 0);
+    ASSERT_EQ(run_mhbench("simulate --load 3 --out " + (b / "drive.csv").string()).exit_code, 0);
+    const fs::path out = fresh("data_out");
+    const std::string run = std::string(" '") + MHB_CLI_PATH +
+                            "' run --algorithms pso --problems pmsm:data=/proc/self/cwd/drive.csv "
+                            "--iterations 2 --runs 2 --no-report --out " +
+                            out.string();
+    const auto r = run_shell(std::string("timeout 300 ") + MHB_MPIEXEC +
+                             " --allow-run-as-root --oversubscribe -n 1 --wdir " + a.string() + run +
+                             " : -n 1 --wdir " + b.string() + run);
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("mhbench run: /proc/self/cwd/drive.csv: sha256 "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(" in rank 1, sha256 "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("mhbench run: every rank must read the same data files; nothing was run"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(out)); // refused before rank 0 touched the directory
 }
 
 } // namespace

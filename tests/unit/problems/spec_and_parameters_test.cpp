@@ -74,6 +74,7 @@ TEST(Registry, UnknownNamesListWhatIsKnown) {
 TEST(Registry, ExpandsRangesOfRangedIntegers) {
     ProblemRegistry r("problem");
     r.add({"toy",
+           1,
            "",
            "",
            {ParameterInfo::integer("f", 1, 1, 24, "function").ranged(),
@@ -91,7 +92,7 @@ TEST(Registry, ExpandsRangesOfRangedIntegers) {
 // values passed the length check) and a range ending at the largest long long never ended.
 TEST(Registry, RangesAtTheEndsOfLongLongNeitherOverflowNorLoop) {
     ProblemRegistry r("problem");
-    r.add({"toy", "", "", {ParameterInfo::integer("f", 1, 1, 24, "function").ranged()}, nullptr});
+    r.add({"toy", 1, "", "", {ParameterInfo::integer("f", 1, 1, 24, "function").ranged()}, nullptr});
     EXPECT_THROW((void)r.expand(Spec::parse("toy:f=-9223372036854775807-9223372036854775807")),
                  std::invalid_argument);
     const auto top = r.expand(Spec::parse("toy:f=9223372036854775805-9223372036854775807"));

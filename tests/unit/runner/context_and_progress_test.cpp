@@ -1,5 +1,6 @@
 // context.ini carries the build's identity and the command line; the progress bar draws the
 // documented line, stays silent before its delay, and formats durations.
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <sstream>
 
@@ -22,6 +23,35 @@ TEST(Context, HoldsVersionCommitCompilerThreadsAndQuotedCommandLine) {
     EXPECT_NE(text.find("hostname = "), std::string::npos);
     // Quoted so that it can be pasted back into a POSIX shell.
     EXPECT_NE(text.find("command = mhbench run --algorithms 'a b' --out 'it'\\''s'\n"), std::string::npos);
+}
+
+TEST(Context, KeepsEverySessionOfAResumedStudyFirstFirst) {
+    // A context.ini written before histories were kept: its one session comes from its fields.
+    const std::string old =
+        "# comment\nversion = 0.0.9\ngit_commit = abc\ngit_dirty_at_build = yes\n"
+        "date_utc = 2025-01-02T03:04:05Z\nhostname = node7\ncommand = mhbench run --runs 2\n";
+    const std::string old_session = "session = 2025-01-02T03:04:05Z on node7, mhbench 0.0.9 commit abc "
+                                    "(dirty: yes): mhbench run --runs 2\n";
+    EXPECT_EQ(context_sessions(old), old_session);
+    EXPECT_EQ(context_sessions(""), "");
+
+    const std::string second =
+        context_with_history(context_ini(1, {"mhbench", "run", "--runs", "3"}), context_sessions(old));
+    const std::string third =
+        context_with_history(context_ini(1, {"mhbench", "run", "--runs", "4"}), context_sessions(second));
+    // The latest session's fields head the file, as readers of context.ini expect.
+    EXPECT_EQ(third.rfind("# Where and how", 0), 0U);
+    EXPECT_NE(third.find("command = mhbench run --runs 4\n"), std::string::npos);
+    EXPECT_EQ(third.find("command = mhbench run --runs 3\n"), std::string::npos);
+    // Then every session, the first first, each naming its commit and command.
+    const std::string history = context_sessions(third);
+    EXPECT_EQ(history.rfind(old_session, 0), 0U) << history;
+    EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 3);
+    EXPECT_NE(history.find("): mhbench run --runs 3\nsession = "), std::string::npos) << history;
+    EXPECT_TRUE(history.ends_with(", mhbench " + std::string(build::version) + " commit " +
+                                  build::git_commit + " (dirty: " + build::git_dirty +
+                                  "): mhbench run --runs 4\n"))
+        << history;
 }
 
 TEST(Progress, FormatsDurations) {

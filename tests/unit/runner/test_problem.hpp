@@ -41,7 +41,7 @@ private:
 inline ProblemRegistry registry_of(std::string name, ProblemRegistry::Factory factory,
                                    std::vector<ParameterInfo> parameters = {}) {
     ProblemRegistry registry("problem");
-    registry.add({std::move(name), "a test problem", "", std::move(parameters), std::move(factory)});
+    registry.add({std::move(name), 1, "a test problem", "", std::move(parameters), std::move(factory)});
     return registry;
 }
 
