@@ -329,8 +329,12 @@ int run_run_command(const std::vector<std::string>& args) {
         context_ini(threads, command_line) + distributed_context() + context_data_files(prepared->problems);
     if (shard)
         context += "shard = " + shard_text(*shard) + '\n';
+    StudyRunKeys keys = study_run_keys(*prepared);
+    keys.run_ids = shard_runs; // a shard's directory holds its runs only
     StudyWriter writer(dir, study_ini(prepared->study), context, prepared->parameter_columns,
-                       vm["overwrite"].as<bool>(), prepared->algorithms, study_run_keys(*prepared));
+                       vm["overwrite"].as<bool>(), prepared->algorithms, std::move(keys));
+    for (const std::string& warning : writer.warnings())
+        std::cerr << "mhbench run: warning: " << warning << '\n';
     if (shard)
         write_file_atomically(shard_file, shard_line);
     else
