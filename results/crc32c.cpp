@@ -1,6 +1,7 @@
 #include "results/crc32c.hpp"
 
 #include <array>
+#include <cstring>
 
 namespace mhb {
 namespace {
@@ -8,8 +9,9 @@ namespace {
 // The reflected Castagnoli polynomial 0x1EDC6F41.
 constexpr std::uint32_t polynomial = 0x82F63B78U;
 
-// One table per byte position (slicing by 8): a store is checked whole when it is opened, and
-// eight bytes a step keep that a small share of reading it.
+// One table per byte position (slicing by 8), for processors without the crc32 instruction: a
+// store is checked whole when it is opened, and eight bytes a step keep that a small share of
+// reading it.
 using Tables = std::array<std::array<std::uint32_t, 256>, 8>;
 
 constexpr Tables make_tables() {
@@ -32,9 +34,37 @@ std::uint32_t byte_at(std::string_view bytes, std::size_t i) {
     return static_cast<unsigned char>(bytes[i]);
 }
 
+#if defined(__x86_64__)
+// SSE4.2's crc32 computes CRC-32C, 8 bytes an instruction: about 20 times the tables' speed, which
+// matters for a store of 10^5 records checked when written, opened and rendered.
+__attribute__((target("sse4.2"))) std::uint32_t crc32c_instruction(std::string_view bytes,
+                                                                   std::uint32_t crc) {
+    std::uint64_t state = ~crc;
+    std::size_t i = 0;
+    for (; i + 8 <= bytes.size(); i += 8) {
+        std::uint64_t word = 0;
+        std::memcpy(&word, bytes.data() + i, 8);
+        state = __builtin_ia32_crc32di(state, word);
+    }
+    auto narrow = static_cast<std::uint32_t>(state);
+    for (; i < bytes.size(); ++i)
+        narrow = __builtin_ia32_crc32qi(narrow, static_cast<unsigned char>(bytes[i]));
+    return ~narrow;
+}
+#endif
+
 } // namespace
 
 std::uint32_t crc32c(std::string_view bytes, std::uint32_t crc) {
+#if defined(__x86_64__)
+    static const bool has_instruction = __builtin_cpu_supports("sse4.2");
+    if (has_instruction)
+        return crc32c_instruction(bytes, crc);
+#endif
+    return detail::crc32c_tables(bytes, crc);
+}
+
+std::uint32_t detail::crc32c_tables(std::string_view bytes, std::uint32_t crc) {
     crc = ~crc;
     std::size_t i = 0;
     for (; i + 8 <= bytes.size(); i += 8) {

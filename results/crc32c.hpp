@@ -10,6 +10,12 @@
 namespace mhb {
 
 // The CRC-32C of `bytes`, continuing from `crc` (the CRC of the bytes before them; 0 to start).
+// With the processor's crc32 instruction (SSE4.2) where it has one, from tables otherwise.
 std::uint32_t crc32c(std::string_view bytes, std::uint32_t crc = 0);
+
+namespace detail {
+// The same from tables alone, whatever the processor (for tests of both ways).
+std::uint32_t crc32c_tables(std::string_view bytes, std::uint32_t crc = 0);
+} // namespace detail
 
 } // namespace mhb

@@ -8,11 +8,23 @@ namespace mhb {
 namespace {
 
 TEST(Crc32c, MatchesTheStandardCheckValue) {
-    EXPECT_EQ(crc32c("123456789"), 0xE3069283U); // the catalogue's "check" for CRC-32/ISCSI
-    EXPECT_EQ(crc32c(""), 0U);
-    // RFC 3720 (iSCSI), B.4: 32 bytes of zeros, and of 0xff.
-    EXPECT_EQ(crc32c(std::string(32, '\0')), 0x8A9136AAU);
-    EXPECT_EQ(crc32c(std::string(32, '\xff')), 0x62A8AB43U);
+    for (const auto crc : {&crc32c, &detail::crc32c_tables}) { // the instruction's way, and the tables'
+        EXPECT_EQ(crc("123456789", 0), 0xE3069283U);           // the catalogue's "check" for CRC-32/ISCSI
+        EXPECT_EQ(crc("", 0), 0U);
+        // RFC 3720 (iSCSI), B.4: 32 bytes of zeros, and of 0xff.
+        EXPECT_EQ(crc(std::string(32, '\0'), 0), 0x8A9136AAU);
+        EXPECT_EQ(crc(std::string(32, '\xff'), 0), 0x62A8AB43U);
+    }
+}
+
+TEST(Crc32c, BothWaysAgreeOnEveryLengthAndAlignment) {
+    std::string bytes;
+    for (int i = 0; i < 300; ++i)
+        bytes.push_back(static_cast<char>((i * 131 + 7) & 0xff));
+    for (std::size_t start = 0; start < 9; ++start)
+        for (std::size_t length = 0; start + length <= bytes.size(); length += 13)
+            EXPECT_EQ(crc32c(std::string_view(bytes).substr(start, length), 0x1234U),
+                      detail::crc32c_tables(std::string_view(bytes).substr(start, length), 0x1234U));
 }
 
 TEST(Crc32c, ContinuesAcrossPiecesAndSeesEveryFlippedBit) {
