@@ -74,12 +74,14 @@ inline constexpr int store_block_format = 4;
 
 // How often store.bin is synced to disk while runs are appended: after `runs` runs or `seconds`
 // seconds, whichever comes first (checked as each run is stored), and always at the end. A crash
-// of the machine loses at most the runs stored since the last sync; the same command recomputes
-// them. Syncing is one fdatasync, a few milliseconds: the interval keeps it well under 1 % of the
-// cheapest study (BENCHMARKS.md, "What durability costs").
+// of the machine loses at most the runs stored since the last sync (3 s of computing, or runs so
+// cheap that 100 000 of them took less); the same command computes them again. A sync is one
+// fdatasync of 1-20 ms that stalls the thread storing the run: every 10 000 runs cost 5-8 % of a
+// study of 100 000 runs of 100 evaluations, every 3 s costs nothing measurable (BENCHMARKS.md,
+// "What durability costs").
 struct StoreSyncPolicy {
-    std::int64_t runs = 10000;
-    double seconds = 2.0;
+    std::int64_t runs = 100000;
+    double seconds = 3.0;
 };
 
 // What determines a run's record, and how a user names the run. The runner builds one per run of
