@@ -72,8 +72,10 @@ void expect_same_files(const fs::path& a, const fs::path& b) {
 }
 
 // A study of `count` runs written in one go: what every damaged or crashed one must end up as.
+// Named after the test: CTest runs the tests of this file in parallel processes.
 fs::path clean_study(std::int64_t count = 8) {
-    const fs::path dir = fresh_dir("clean_" + std::to_string(count));
+    const fs::path dir =
+        fresh_dir(std::string("clean_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     StudyWriter w = open_study(dir, count);
     for (std::int64_t id = 0; id < count; ++id)
         w.append(make_record(id), 0.5);
@@ -204,7 +206,7 @@ TEST(StoreIntegrity, ACrashLosesOnlyTheRunsStoredSinceTheLastSync) {
     const std::string dropped = store.substr(0, synced);
     const std::string zeroed = dropped + std::string(store.size() - synced, '\0');
     for (const std::string& after_crash : {dropped, zeroed}) {
-        const fs::path crashed = fresh_dir("crashed");
+        const fs::path crashed = fresh_dir("crashed_" + std::to_string(after_crash.size()));
         fs::copy(dir, crashed);
         write_bytes(crashed / "store.bin", after_crash);
         StudyWriter w = open_study(crashed);
