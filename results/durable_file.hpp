@@ -17,5 +17,9 @@ void sync_file(int fd, const std::filesystem::path& path);
 void sync_file(const std::filesystem::path& path);
 // fsync of a directory, so that the renames and creations in it are on disk.
 void sync_directory(const std::filesystem::path& dir);
+// Starts writing the file's dirty pages to disk without waiting for them, so that the sync at the
+// end finds little left to write (the disk works while the program computes).
+void start_writeback(int fd);
+void start_writeback(const std::filesystem::path& path);
 
 } // namespace mhb

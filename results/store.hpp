@@ -75,10 +75,9 @@ inline constexpr int store_block_format = 4;
 // How often store.bin is synced to disk while runs are appended: after `runs` runs or `seconds`
 // seconds, whichever comes first (checked as each run is stored), and always at the end. A crash
 // of the machine loses at most the runs stored since the last sync (3 s of computing, or runs so
-// cheap that 100 000 of them took less); the same command computes them again. A sync is one
-// fdatasync of 1-20 ms that stalls the thread storing the run: every 10 000 runs cost 5-8 % of a
-// study of 100 000 runs of 100 evaluations, every 3 s costs nothing measurable (BENCHMARKS.md,
-// "What durability costs").
+// cheap that 100 000 of them took less); the same command computes them again. A sync stalls the
+// thread storing the run: every 10 000 runs, a study of 100 000 runs of 100 evaluations made 10 of
+// them; every 3 s, it makes 1 or 2 (BENCHMARKS.md, "What durability costs").
 struct StoreSyncPolicy {
     std::int64_t runs = 100000;
     double seconds = 3.0;
