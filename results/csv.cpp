@@ -11,6 +11,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "results/durable_file.hpp"
+
 namespace mhb {
 
 std::string csv_field(std::string_view text) {
@@ -249,7 +251,8 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
         ::unlink(temporary.c_str());
         fail(error);
     };
-    if (!write_all(fd, content)) {
+    // Synced before the rename: otherwise a power cut may leave the new name on an empty file.
+    if (!write_all(fd, content) || (syncs_enabled() && ::fdatasync(fd) != 0)) {
         const int error = errno;
         ::close(fd);
         fail_and_remove(error);
@@ -258,6 +261,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
         fail_and_remove(errno);
     if (::rename(temporary.c_str(), path.c_str()) != 0)
         fail_and_remove(errno);
+    sync_directory(path.parent_path()); // the rename itself is durable only with its directory
 }
 
 } // namespace mhb

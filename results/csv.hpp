@@ -43,7 +43,8 @@ CsvTable read_csv(const std::filesystem::path& path);
 // The whole content of a file; throws std::runtime_error naming it when it cannot be opened.
 std::string read_whole_file(const std::filesystem::path& path);
 
-// Writes `content` to `path` atomically (a temporary file in the same folder, then rename).
+// Writes `content` to `path` atomically and durably: a temporary file in the same folder, synced,
+// renamed over `path`, and the folder synced. On an error the temporary file is removed.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
 } // namespace mhb

@@ -2,10 +2,11 @@
 //
 //   study.ini        the study as run (written by the runner; re-runnable with --study-file)
 //   context.ini      version, git commit, compiler, build type, threads, date (varies by machine)
-//   store.bin        every finished run, keyed by its identity (see RunKey): appended and flushed
-//                    as each run finishes, kept when the study is done, so an interrupted study
-//                    resumes and a finished one grows (more runs, algorithms, problems, budgets)
-//                    by computing only the runs it does not hold
+//   store.bin        every finished run, keyed by its identity (see RunKey): appended as each run
+//                    finishes, each record checksummed (store_block.hpp), synced to disk at a
+//                    bounded interval (StoreSyncPolicy) and at the end, kept when the study is
+//                    done, so an interrupted study resumes and a finished one grows (more runs,
+//                    algorithms, problems, budgets) by computing only the runs it does not hold
 //   runs.csv         one record per run of study.ini, sorted by run_id  } rendered from store.bin;
 //   curves.csv       best-so-far per iteration (long format)          } identical for any thread
 //   checkpoints.csv  best-so-far on the shared evaluation grid        } count, finished only by
@@ -33,6 +34,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -68,6 +70,21 @@ struct StudyFiles {
 // a record (the improvement trace) is a section of it (record_codec.hpp) instead: the values of a
 // stored run are still those this mhbench computes, so it stays usable, without the new section.
 inline constexpr int store_format_version = 3;
+// The framing of store.bin's blocks: format 4 adds a checksum to each (store_block.hpp); blocks
+// of format 3 carry none and are still read. Not part of a run's identity: a checksum changes no
+// value, so the runs of a format-3 store are reused as they are.
+inline constexpr int store_block_format = 4;
+
+// How often store.bin is synced to disk while runs are appended: after `runs` runs or `seconds`
+// seconds, whichever comes first (checked as each run is stored), and always at the end. A crash
+// of the machine loses at most the runs stored since the last sync (3 s of computing, or runs so
+// cheap that 100 000 of them took less); the same command computes them again. A sync stalls the
+// thread storing the run: every 10 000 runs, a study of 100 000 runs of 100 evaluations made 10 of
+// them; every 3 s, it makes 1 or 2 (BENCHMARKS.md, "What durability costs").
+struct StoreSyncPolicy {
+    std::int64_t runs = 100000;
+    double seconds = 3.0;
+};
 
 // What determines a run's record, and how a user names the run. The runner builds one per run of
 // a study (runner/run_identity.hpp); the store keeps it with the record.
@@ -95,6 +112,9 @@ struct StudyRunKeys {
     // implementation version, an edited data file), instead of refusing; every other stored run
     // is kept, and the replaced ones stay in store.bin unused.
     bool recompute_changed = false;
+    // The runs this directory is to hold, when not all `count` (a shard's); finish() renders
+    // exactly these, and refuses when one is missing.
+    std::optional<std::vector<std::int64_t>> run_ids;
 };
 
 // An algorithm of the study as the report shows it (algorithms.csv).
@@ -123,6 +143,8 @@ public:
     //   `overwrite` is set, in which case the store is emptied and every run done again.
     // - A study of format 2 (journal.txt, or runs.csv without store.bin) throws unless
     //   `overwrite`; anything but a study (a user's own files) throws, overwrite or not.
+    // - A stored record whose checksum fails, or that does not decode, is treated as missing: its
+    //   run is computed again, and warnings() has one line naming it.
     // `parameter_columns` is the union of the named parameters of the study's problems, in order:
     // runs.csv gets the columns P, P_true, P_opt and P_err_pct for each (P_opt: the coordinate of
     // the known optimum, e.g. the least-squares estimate; P_err_pct: 100 (P - P_true) / P_true).
@@ -138,11 +160,20 @@ public:
 
     [[nodiscard]] const std::set<std::int64_t>& completed() const { return completed_; }
     [[nodiscard]] const std::filesystem::path& directory() const { return dir_; }
-    // Stores one finished run (thread-safe; the block is written and flushed in one go).
+    // What opening the store found to say (damaged records), one line each, for the user.
+    [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
+    void set_sync_policy(const StoreSyncPolicy& policy) { sync_policy_ = policy; }
+    // The size store.bin had when it was last synced: every block written before then is on disk.
+    [[nodiscard]] std::uint64_t synced_bytes() const { return synced_bytes_; }
+    // Stores one finished run (thread-safe; the block is written in one go, and synced when the
+    // sync policy says so).
     void append(const RunRecord& record, double wall_seconds);
 
-    // Writes the sorted result files of every stored run of the study, runs.csv last. Records are
-    // read back from the store one at a time, so memory does not grow with the study.
+    // Writes the sorted result files of every run of the study, runs.csv last, after checking that
+    // the store holds exactly the study's runs (throws std::runtime_error naming the first one
+    // missing, or a study.ini changed since) and syncing it. Records are read back from the store
+    // a chunk at a time, so memory does not grow with the study. On an error no temporary file is
+    // left behind.
     void finish();
     // Of the files finish() wrote.
     [[nodiscard]] const StudySummary& summary() const { return summary_; }
@@ -153,11 +184,25 @@ private:
         std::uint64_t size = 0;
         std::string slot;
     };
+    // A stored block whose record cannot be trusted (checksum, or decoding).
+    struct Damaged {
+        std::uint64_t offset = 0;
+        std::string identity; // as far as it could be read
+    };
     [[nodiscard]] RunKey key_of(std::int64_t run_id, const RunRecord* record) const;
     void load_store();
+    void index_block(std::uint64_t offset, std::string_view payload);
     void check_changes(bool overwrite);
+    void warn_damaged();
+    [[nodiscard]] std::string run_name(std::int64_t run_id) const;
+    [[nodiscard]] std::optional<std::int64_t> unkeyed_run_id(std::string_view identity) const;
+    [[nodiscard]] std::vector<std::int64_t> runs_to_render() const;
+    void sync_if_due();
+    void sync_store();
+    void render_files(const std::vector<std::int64_t>& ids);
 
     std::filesystem::path dir_;
+    std::string study_text_;
     std::vector<std::string> parameter_columns_;
     std::optional<StudyRunKeys> keys_;
     std::string unkeyed_suffix_; // of identities without keys: " of study <hash of the study text>"
@@ -167,7 +212,15 @@ private:
     std::unordered_map<std::string, Stored> index_; // identity -> where its newest block is
     std::vector<std::string> identities_;           // of the study's runs, by run_id (with keys)
     std::set<std::int64_t> completed_;
+    std::vector<Damaged> damaged_;
+    std::vector<std::string> warnings_;
     StudySummary summary_;
+
+    StoreSyncPolicy sync_policy_;
+    std::mutex sync_mutex_; // one sync at a time; others do not wait for it
+    std::atomic<std::int64_t> unsynced_runs_{0};
+    std::atomic<std::int64_t> last_sync_ns_{0}; // steady clock
+    std::atomic<std::uint64_t> synced_bytes_{0};
 };
 
 // True when `dir` is a mhbench study directory (see above).
@@ -175,6 +228,12 @@ bool is_study_directory(const std::filesystem::path& dir);
 
 // The header of runs.csv for the given parameter columns.
 std::string runs_csv_header(const std::vector<std::string>& parameter_columns);
+
+// The text of .mhbench-study: the format, and once a study is finished, the checksum of the
+// study.ini its runs.csv was rendered for and the number of runs in it (`runs` < 0: unfinished).
+std::string study_marker(std::string_view study_text, std::int64_t runs = -1);
+// The CRC-32C of a study.ini's text, in hex, as the marker names it.
+std::string study_checksum(std::string_view study_text);
 
 struct StudyData {
     std::filesystem::path directory;

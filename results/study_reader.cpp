@@ -2,6 +2,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -38,6 +39,36 @@ std::int64_t find_run(const std::map<std::int64_t, std::size_t>& index, const Cs
     return id;
 }
 
+// The value of the line "name = value" of `text`, if it has one.
+std::optional<std::string> marker_value(const std::string& text, const std::string& name) {
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind(name + " = ", 0) == 0)
+            return line.substr(name.size() + 3);
+    return std::nullopt;
+}
+
+// runs.csv must be the one rendered for this study.ini: two processes writing into one directory
+// could leave one study's runs beside the other's study.ini. Markers from before the check name
+// no study.ini, and are read as they are.
+void check_runs_belong_to_study(const fs::path& dir, const StudyData& data, std::size_t runs) {
+    const fs::path marker = dir / StudyFiles::marker;
+    if (!fs::exists(marker))
+        return;
+    const std::string text = read_whole_file(marker);
+    const auto checksum = marker_value(text, "study.ini crc32c");
+    if (checksum && *checksum != study_checksum(data.study_text))
+        throw std::runtime_error((dir / StudyFiles::runs).string() +
+                                 ": was rendered for another study.ini than the one beside it (crc32c " +
+                                 *checksum + ", study.ini's is " + study_checksum(data.study_text) +
+                                 "); run the study again to render it for this one");
+    const auto count = marker_value(text, "runs");
+    if (count && *count != std::to_string(runs))
+        throw std::runtime_error((dir / StudyFiles::runs).string() + ": has " + std::to_string(runs) +
+                                 (runs == 1 ? " row" : " rows") + ", but the study it was rendered for has " +
+                                 *count + " runs");
+}
+
 } // namespace
 
 StudyData load_study(const fs::path& dir) {
@@ -63,6 +94,7 @@ StudyData load_study(const fs::path& dir) {
     }
 
     const CsvTable runs = read_csv(dir / StudyFiles::runs);
+    check_runs_belong_to_study(dir, data, runs.rows.size());
     const std::size_t first_parameter = runs.column("best_x") + 1;
     const std::size_t message_column = runs.column("message");
     constexpr std::size_t per_parameter = 4; // P, P_true, P_opt, P_err_pct

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
+#include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <deque>
 #include <fcntl.h>
@@ -16,9 +18,12 @@
 #include <tuple>
 #include <unistd.h>
 
+#include "results/crc32c.hpp"
 #include "results/csv.hpp"
+#include "results/durable_file.hpp"
 #include "results/record_codec.hpp"
 #include "results/store.hpp"
+#include "results/store_block.hpp"
 
 namespace mhb {
 namespace fs = std::filesystem;
@@ -110,22 +115,10 @@ Block render(const RunRecord& r, double wall_seconds, const std::vector<std::str
     return block;
 }
 
-// store.bin is a sequence of blocks: magic, payload size, payload (identity, slot, facts, notes,
-// the encoded record), end mark. A block without its end mark (the process died while writing
-// it) is cut off when the store is opened again.
-constexpr std::string_view block_magic = "MHBRUN3\n";
-constexpr std::string_view block_end = "MHBEND3\n";
-
-std::string store_block(const RunKey& key, const RunRecord& record, double wall_seconds) {
-    ByteWriter payload;
-    payload.text(key.identity);
-    payload.text(key.slot);
-    payload.text(key.facts);
-    payload.text(key.notes);
-    encode_record(payload, record, wall_seconds);
-    ByteWriter size;
-    size.u64(payload.bytes().size());
-    return std::string(block_magic) + size.bytes() + payload.bytes() + std::string(block_end);
+std::int64_t steady_now_ns() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(
+               std::chrono::steady_clock::now().time_since_epoch())
+        .count();
 }
 
 // Reads payloads back by position (pread: no shared file offset, no stream buffer to refill for
@@ -184,6 +177,20 @@ bool holds_other_files(const fs::path& dir) {
 
 } // namespace
 
+std::string study_checksum(std::string_view study_text) {
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "%08x", crc32c(study_text));
+    return hex;
+}
+
+std::string study_marker(std::string_view study_text, std::int64_t runs) {
+    std::string text = "mhbench study directory, format 3\n";
+    if (runs < 0)
+        return text;
+    return text + "study.ini crc32c = " + study_checksum(study_text) + "\nruns = " + std::to_string(runs) +
+           '\n';
+}
+
 bool is_study_directory(const fs::path& dir) {
     std::error_code ec;
     if (fs::exists(dir / StudyFiles::marker, ec))
@@ -195,7 +202,8 @@ bool is_study_directory(const fs::path& dir) {
 StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string context_text,
                          std::vector<std::string> parameter_columns, bool overwrite,
                          const std::vector<AlgorithmInfo>& algorithms, std::optional<StudyRunKeys> keys)
-    : dir_(std::move(dir)), parameter_columns_(std::move(parameter_columns)), keys_(std::move(keys)),
+    : dir_(std::move(dir)), study_text_(study_text), parameter_columns_(std::move(parameter_columns)),
+      keys_(std::move(keys)),
       unkeyed_suffix_(" of study " + std::to_string(std::hash<std::string>{}(study_text))) {
     std::error_code ec;
     if (fs::is_directory(dir_, ec) && holds_other_files(dir_) && !is_study_directory(dir_))
@@ -218,13 +226,16 @@ StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string conte
             fs::remove(dir_ / name, ec);
     load_store();
     check_changes(overwrite);
+    warn_damaged();
 
     // A changed study is unfinished until finish() writes its files again.
     const bool same_study =
         fs::exists(dir_ / StudyFiles::study) && read_whole_file(dir_ / StudyFiles::study) == study_text;
     if (!same_study)
         fs::remove(dir_ / StudyFiles::runs, ec);
-    write_file_atomically(dir_ / StudyFiles::marker, "mhbench study directory, format 3\n");
+    // A finished study's marker names its study.ini: kept while that study stays.
+    if (!same_study || !fs::exists(dir_ / StudyFiles::marker))
+        write_file_atomically(dir_ / StudyFiles::marker, study_marker(study_text));
     write_file_atomically(dir_ / StudyFiles::study, study_text);
     write_file_atomically(dir_ / StudyFiles::context, context_text);
     if (algorithms.empty()) {
@@ -239,11 +250,21 @@ StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string conte
     if (store_fd_ < 0)
         throw std::runtime_error((dir_ / StudyFiles::store).string() + ": cannot be written (" +
                                  std::strerror(errno) + ")");
+    if (!has_store)
+        sync_directory(dir_); // the new store.bin's name
+    synced_bytes_ = store_size_.load();
+    last_sync_ns_ = steady_now_ns();
 }
 
 StudyWriter::~StudyWriter() {
-    if (store_fd_ >= 0)
-        ::close(store_fd_);
+    if (store_fd_ < 0)
+        return;
+    // An interrupted study (Ctrl-C) keeps what it stored; a destructor must not throw.
+    try {
+        sync_store();
+    } catch (const std::runtime_error&) {
+    }
+    ::close(store_fd_);
 }
 
 RunKey StudyWriter::key_of(std::int64_t run_id, const RunRecord* record) const {
@@ -317,19 +338,8 @@ void StudyWriter::load_store() {
         if (complete)
             complete = view(position + header_size + size, block_end.size()) == block_end;
         if (complete) {
-            try {
-                ByteReader reader(view(position + header_size, size), path.string());
-                const std::string identity = reader.text();
-                Stored stored;
-                stored.offset = position + header_size;
-                stored.size = size;
-                stored.slot = reader.text();
-                index_[identity] = std::move(stored);
-            } catch (const std::runtime_error&) {
-                complete = false;
-            }
-        }
-        if (complete) {
+            // Framed whole: kept in the file (a damaged record is only left out of the index).
+            index_block(position + header_size, view(position + header_size, size));
             position += header_size + size + block_end.size();
             good_end = position;
         } else {
@@ -344,6 +354,32 @@ void StudyWriter::load_store() {
     if (ec)
         throw std::runtime_error(path.string() + ": cannot be repaired (" + ec.message() + ")");
     store_size_ = good_end;
+    // A run whose damaged record was computed again later has its good record: nothing to say.
+    std::erase_if(damaged_, [&](const Damaged& d) { return index_.count(d.identity) != 0; });
+}
+
+void StudyWriter::index_block(std::uint64_t offset, std::string_view payload) {
+    const PayloadCheck check = check_payload(payload);
+    ByteReader reader(payload, (dir_ / StudyFiles::store).string());
+    std::string identity;
+    try {
+        identity = reader.text();
+        Stored stored;
+        stored.offset = offset;
+        stored.size = payload.size();
+        stored.slot = reader.text();
+        if (check == PayloadCheck::unchecked) {           // no checksum: it must at least decode
+            for (int skipped = 0; skipped < 2; ++skipped) // facts, notes
+                reader.text();
+            (void)decode_record(reader, true);
+        }
+        if (check != PayloadCheck::damaged) {
+            index_[identity] = std::move(stored);
+            return;
+        }
+    } catch (const std::runtime_error&) {
+    }
+    damaged_.push_back({offset, std::move(identity)});
 }
 
 void StudyWriter::check_changes(bool overwrite) {
@@ -391,15 +427,9 @@ void StudyWriter::check_changes(bool overwrite) {
             changes.push_back(change);
     }
     if (!keys_) {
-        for (const auto& [identity, stored] : index_) {
-            std::int64_t id = 0;
-            const auto [end, error] =
-                std::from_chars(identity.data() + 4, identity.data() + identity.size(), id);
-            if (identity.rfind("run ", 0) == 0 && error == std::errc() &&
-                std::string_view(end, static_cast<std::size_t>(identity.data() + identity.size() - end)) ==
-                    unkeyed_suffix_)
-                completed_.insert(id);
-        }
+        for (const auto& [identity, stored] : index_)
+            if (const auto id = unkeyed_run_id(identity))
+                completed_.insert(*id);
         return;
     }
     if (changes.empty() || overwrite || keys_->recompute_changed)
@@ -437,16 +467,135 @@ void StudyWriter::append(const RunRecord& record, double wall_seconds) {
     stored.offset = offset + block_magic.size() + 8;
     stored.size = block.size() - block_magic.size() - 8 - block_end.size();
     stored.slot = key.slot;
-    const std::lock_guard<std::mutex> lock(mutex_);
-    index_[key.identity] = std::move(stored);
-    completed_.insert(record.run_id);
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        index_[key.identity] = std::move(stored);
+        completed_.insert(record.run_id);
+    }
+    ++unsynced_runs_;
+    // Every 8 MB the disk starts on the store's new blocks, so that a sync finds little to write.
+    constexpr std::uint64_t writeback_step = std::uint64_t{8} << 20;
+    if ((offset + block.size()) / writeback_step != offset / writeback_step)
+        start_writeback(store_fd_);
+    sync_if_due();
+}
+
+void StudyWriter::sync_if_due() {
+    const double since = static_cast<double>(steady_now_ns() - last_sync_ns_.load()) * 1e-9;
+    if (unsynced_runs_.load() < sync_policy_.runs && since < sync_policy_.seconds)
+        return;
+    // A thread that finds a sync under way goes on: that sync, or the next, covers its block.
+    const std::unique_lock<std::mutex> lock(sync_mutex_, std::try_to_lock);
+    if (lock.owns_lock())
+        sync_store();
+}
+
+void StudyWriter::sync_store() {
+    // Blocks written (pwrite returned) before the sync starts are on disk once it returns.
+    const std::uint64_t size = store_size_.load();
+    unsynced_runs_ = 0;
+    last_sync_ns_ = steady_now_ns();
+    sync_file(store_fd_, dir_ / StudyFiles::store);
+    synced_bytes_ = size;
+}
+
+void StudyWriter::warn_damaged() {
+    std::unordered_map<std::string_view, std::int64_t> run_of; // damaged identity -> run_id, or -1
+    for (const auto& d : damaged_)
+        run_of.emplace(d.identity, -1);
+    for (std::size_t id = 0; id < identities_.size() && !run_of.empty(); ++id) {
+        const auto found = run_of.find(identities_[id]);
+        if (found != run_of.end())
+            found->second = static_cast<std::int64_t>(id);
+    }
+    if (!keys_)
+        for (auto& [identity, id] : run_of)
+            id = unkeyed_run_id(identity).value_or(-1);
+    const std::string store = (dir_ / StudyFiles::store).string();
+    std::set<std::string_view> said;
+    for (const auto& d : damaged_) {
+        if (!said.insert(d.identity).second)
+            continue;
+        const std::int64_t id = run_of.at(d.identity);
+        if (id < 0)
+            warnings_.push_back(store + ": the record at byte " + std::to_string(d.offset) +
+                                " is damaged and not used (if it was a run of this study, it will be "
+                                "computed again)");
+        else
+            warnings_.push_back(store + ": the record of " + run_name(id) +
+                                " is damaged; it will be computed again");
+    }
+}
+
+std::string StudyWriter::run_name(std::int64_t run_id) const {
+    std::string name = "run " + std::to_string(run_id);
+    if (!keys_)
+        return name;
+    // The slot, "label | problem | budget | run index", as "(label, problem, budget, run k)".
+    std::string slot = keys_->key(run_id).slot;
+    const auto last = slot.rfind(" | ");
+    if (last != std::string::npos)
+        slot.replace(last, 3, ", run ");
+    for (auto at = slot.find(" | "); at != std::string::npos; at = slot.find(" | ", at))
+        slot.replace(at, 3, ", ");
+    return name + " (" + slot + ")";
+}
+
+std::optional<std::int64_t> StudyWriter::unkeyed_run_id(std::string_view identity) const {
+    std::int64_t id = 0;
+    if (identity.rfind("run ", 0) != 0)
+        return std::nullopt;
+    const auto [end, error] = std::from_chars(identity.data() + 4, identity.data() + identity.size(), id);
+    if (error != std::errc() ||
+        std::string_view(end, static_cast<std::size_t>(identity.data() + identity.size() - end)) !=
+            unkeyed_suffix_)
+        return std::nullopt;
+    return id;
+}
+
+std::vector<std::int64_t> StudyWriter::runs_to_render() const {
+    if (!keys_) // runs named by run_id alone: the study is what was stored
+        return {completed_.begin(), completed_.end()};
+    std::vector<std::int64_t> ids;
+    if (keys_->run_ids) {
+        ids = *keys_->run_ids;
+        std::sort(ids.begin(), ids.end());
+    } else {
+        ids.resize(static_cast<std::size_t>(keys_->count));
+        for (std::size_t i = 0; i < ids.size(); ++i)
+            ids[i] = static_cast<std::int64_t>(i);
+    }
+    for (const std::int64_t id : ids)
+        if (id < 0 || id >= keys_->count || index_.count(identities_[static_cast<std::size_t>(id)]) == 0)
+            throw std::runtime_error((dir_ / StudyFiles::store).string() + ": holds no record of " +
+                                     run_name(id) +
+                                     " of study.ini; run the same command again to compute it");
+    return ids;
 }
 
 void StudyWriter::finish() {
     const std::lock_guard<std::mutex> lock(mutex_);
+    {
+        const std::lock_guard<std::mutex> syncing(sync_mutex_);
+        sync_store();
+    }
+    const std::vector<std::int64_t> ids = runs_to_render();
+    // Another process writing into this directory (it should hold the lock) could have put its
+    // study.ini beside the runs of this one.
+    if (read_whole_file(dir_ / StudyFiles::study) != study_text_)
+        throw std::runtime_error((dir_ / StudyFiles::study).string() +
+                                 ": was replaced while this study ran (another mhbench writing into the "
+                                 "same directory?); nothing was rendered");
+    render_files(ids);
+}
+
+void StudyWriter::render_files(const std::vector<std::int64_t>& ids) {
     const StoreReader in(dir_ / StudyFiles::store);
     const auto render_stored = [&](std::int64_t id, std::string_view payload, Block& out,
                                    StudySummary& summary) {
+        if (check_payload(payload) == PayloadCheck::damaged)
+            throw std::runtime_error((dir_ / StudyFiles::store).string() + ": the record of " + run_name(id) +
+                                     " was damaged while the study ran; run the same command again");
         ByteReader reader(payload, (dir_ / StudyFiles::store).string());
         for (int skipped = 0; skipped < 4; ++skipped) // identity, slot, facts, notes
             reader.text();
@@ -483,12 +632,21 @@ void StudyWriter::finish() {
             }
         }
     };
-    // Each file is streamed to its temporary name and renamed at the end, runs.csv last.
+    // Each file is streamed to its temporary name and renamed at the end, runs.csv last. Whatever
+    // fails on the way, no temporary file stays behind.
     struct Output {
         fs::path path;
         fs::path temporary;
         std::ofstream out;
     };
+    struct Temporaries {
+        std::vector<fs::path> paths; // not renamed yet
+        ~Temporaries() {
+            std::error_code ignored;
+            for (const auto& path : paths)
+                fs::remove(path, ignored);
+        }
+    } temporaries;
     const auto open = [&](const char* name) {
         Output o;
         o.path = dir_ / name;
@@ -498,6 +656,7 @@ void StudyWriter::finish() {
         if (!o.out)
             throw std::runtime_error(o.path.string() + ": cannot be written (" +
                                      (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
+        temporaries.paths.push_back(o.temporary);
         return o;
     };
     Output runs = open(StudyFiles::runs);
@@ -519,8 +678,16 @@ void StudyWriter::finish() {
     summary_ = StudySummary{};
     // Records are decoded and rendered in parallel, a chunk of runs at a time, and written in
     // run_id order: the output is the same bytes as a serial loop's.
-    const std::vector<std::int64_t> ids(completed_.begin(), completed_.end());
     constexpr std::size_t chunk = 512;
+    // Every 32 chunks (16 384 runs, a few MB a file) the disk starts on what is written, so that
+    // the syncs before the renames find little left to write.
+    std::size_t chunks_written = 0;
+    const auto start_writing_back = [&] {
+        for (Output* o : {&runs, &curves, &checkpoints, &trajectories, &improvements, &timings}) {
+            o->out.flush();
+            start_writeback(o->temporary);
+        }
+    };
     struct Rendered {
         Block text;
         StudySummary summary;
@@ -597,6 +764,8 @@ void StudyWriter::finish() {
                     trajectories.out << part->text.trajectory_lines;
                     improvements.out << part->text.improvement_lines;
                     timings.out << part->text.timing_line;
+                    if (++chunks_written % 32 == 0)
+                        start_writing_back();
                     summary_.runs += part->summary.runs;
                     summary_.failed += part->summary.failed;
                     summary_.evaluations += part->summary.evaluations;
@@ -608,11 +777,17 @@ void StudyWriter::finish() {
         o->out.close();
         if (!o->out)
             throw std::runtime_error(o->path.string() + ": writing failed (" + std::strerror(errno) + ")");
+        sync_file(o->temporary);
+        if (o == &runs) // the study this runs.csv belongs to, for load_study to check
+            write_file_atomically(dir_ / StudyFiles::marker,
+                                  study_marker(study_text_, static_cast<std::int64_t>(ids.size())));
         std::error_code ec;
         fs::rename(o->temporary, o->path, ec);
         if (ec)
             throw std::runtime_error(o->path.string() + ": cannot be written (" + ec.message() + ")");
+        std::erase(temporaries.paths, o->temporary);
     }
+    sync_directory(dir_);
 }
 
 } // namespace mhb

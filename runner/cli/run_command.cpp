@@ -361,8 +361,11 @@ int run_run_command(const std::vector<std::string>& args) {
         context, resumed ? context_sessions(read_whole_file(dir / StudyFiles::context)) : "");
     StudyRunKeys keys = study_run_keys(*prepared);
     keys.recompute_changed = vm["recompute-changed"].as<bool>();
+    keys.run_ids = shard_runs; // a shard's directory holds its runs only
     StudyWriter writer(dir, study_ini(prepared->study), context, prepared->parameter_columns,
                        vm["overwrite"].as<bool>(), prepared->algorithms, std::move(keys));
+    for (const std::string& warning : writer.warnings())
+        std::cerr << "mhbench run: warning: " << warning << '\n';
     if (shard)
         write_file_atomically(shard_file, shard_line);
     else

@@ -333,8 +333,17 @@ std::vector<BadInput> catalogue() {
         {study_copy + " && sed -i '2s/^0,/zero,/' s/runs.csv", "report s --no-figures", 1,
          says({"mhbench report: s/runs.csv, line 2, column 'run_id': 'zero' is not an integer"})},
         {study_copy + " && head -n 1 $F/study/runs.csv > s/runs.csv", "report s --no-figures", 1,
-         one_line("s/curves.csv, line 2: run_id 0 is not in runs.csv")},
+         says({"mhbench report: s/runs.csv: has 0 rows, but the study it was rendered for has 2 runs"})},
         {study_copy + " && rm s/trajectories.csv", "report s --no-figures", 1, one_line("s/trajectories.csv")},
+        // runs.csv must be the one rendered for the study.ini beside it (issue 22)
+        {study_copy + " && echo '# edited' >> s/study.ini", "report s --no-figures", 1,
+         one_line("s/runs.csv: was rendered for another study.ini than the one beside it (crc32c ")},
+        {study_copy + " && sed -i '$d' s/runs.csv", "report s --no-figures", 1,
+         says({"mhbench report: s/runs.csv: has 1 row, but the study it was rendered for has 2 runs"})},
+        // an error inside finish() leaves no .tmp file (issue 22)
+        {study_copy + " && rm s/runs.csv && mkdir s/runs.csv",
+         "run --study smoke --runs 2 --evaluations 200 --no-report --quiet --out s", 1,
+         one_line("s/runs.csv: cannot be written ("), "s"},
         {study_copy + " && rm s/context.ini", "report s --no-figures", 1,
          says({"mhbench report: s/context.ini: cannot be read (No such file or directory)"})},
         {study_copy + " && rm s/study.ini && mkdir s/study.ini", "report s --no-figures", 1,

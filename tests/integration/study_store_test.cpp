@@ -3,6 +3,7 @@
 // computes only the runs the store lacks and equals the study run at once, byte for byte; a
 // changed data file, labelled parameter or seed under stored runs is refused, naming the change;
 // SIGKILL during the runs or the report leaves a directory the same command completes.
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -182,6 +183,52 @@ TEST(StudyStore, StudyIniStoresAbsoluteDataPathsSoStudyFilesWorkFromAnyDirectory
                   (dir / "study.ini").string() + "' --out '" + dir.string() + "'");
     ASSERT_EQ(again.exit_code, 0) << again.err;
     EXPECT_EQ(runs_computed(again.out), 0) << again.out;
+}
+
+// The bytes of a double as store.bin holds it (little-endian).
+std::string stored_bytes(double value) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    std::string bytes;
+    for (int i = 0; i < 8; ++i)
+        bytes.push_back(static_cast<char>((bits >> (8 * i)) & 0xffU));
+    return bytes;
+}
+
+TEST(StudyStore, AFlippedByteInAStoredValueIsComputedAgainWithOneWarning) {
+    const fs::path reference = fresh("flipped_reference");
+    const fs::path dir = fresh("flipped");
+    const auto args = [](const fs::path& out) {
+        return run_args("pso", "sphere:dim=2", "--evaluations 400", 4, out);
+    };
+    ASSERT_EQ(run_mhbench(args(reference)).exit_code, 0);
+    ASSERT_EQ(run_mhbench(args(dir)).exit_code, 0);
+    // Run 1's best f, as runs.csv prints it (exactly: the shortest text that reads back the same).
+    const std::string row = lines_of(read_text(dir / "runs.csv")).at(2);
+    ASSERT_EQ(row.substr(0, 2), "1,");
+    std::vector<std::string> fields;
+    for (std::size_t start = 0, comma = 0; comma != std::string::npos; start = comma + 1)
+        fields.push_back(row.substr(start, (comma = row.find(',', start)) - start));
+    std::string store = read_text(dir / "store.bin");
+    const auto at = store.find(stored_bytes(std::stod(fields.at(9))));
+    ASSERT_NE(at, std::string::npos);
+    // Its first place is the record's best_f field (the curve, checkpoints and improvements that
+    // end at the same value come after it): the warning below names the run whose record it is.
+    store[at + 3] = static_cast<char>(store[at + 3] ^ 0x10);
+    std::ofstream(dir / "store.bin", std::ios::binary | std::ios::trunc) << store;
+
+    const auto again = run_mhbench(args(dir));
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_EQ(runs_computed(again.out), 1) << again.out;
+    std::vector<std::string> warnings;
+    for (const auto& line : lines_of(again.err))
+        if (line.find("damaged") != std::string::npos)
+            warnings.push_back(line);
+    ASSERT_EQ(warnings.size(), 1u) << again.err;
+    EXPECT_EQ(warnings[0], "mhbench run: warning: " + (dir / "store.bin").string() +
+                               ": the record of run 1 (pso, sphere:dim=2, evaluations=400, run 1) is "
+                               "damaged; it will be computed again");
+    expect_same_records(dir, reference);
 }
 
 // SIGKILL at the first sign of the phase named by `ready` (a shell test), then the same command.

@@ -148,18 +148,22 @@ TEST(Store, AHalfWrittenBlockBetweenCompleteOnesLosesOnlyItsRun) {
     // half-written block before complete ones: those are kept.
     const fs::path dir = fresh_dir("hole");
     std::uintmax_t first_end = 0;
+    std::uintmax_t second_end = 0;
     {
         StudyWriter w(dir, "study A\n", "", {}, false);
         w.append(make_record(0), 0.1);
         first_end = fs::file_size(dir / "store.bin");
         w.append(make_record(1), 0.1);
+        second_end = fs::file_size(dir / "store.bin");
         w.append(make_record(2), 0.1);
     }
     {
-        // Overwrite the middle of run 1's block with zeros, as an unfinished write leaves it.
+        // Zeros over the second half of run 1's block, end mark included, as an unfinished write
+        // leaves it: its framing is torn (a flipped byte inside a whole block is store_integrity_test's).
         std::fstream f(dir / "store.bin", std::ios::binary | std::ios::in | std::ios::out);
-        f.seekp(static_cast<std::streamoff>(first_end + 4));
-        const std::string zeros(64, '\0');
+        const std::uintmax_t middle = first_end + (second_end - first_end) / 2;
+        f.seekp(static_cast<std::streamoff>(middle));
+        const std::string zeros(second_end - middle, '\0');
         f.write(zeros.data(), static_cast<std::streamsize>(zeros.size()));
     }
     StudyWriter w(dir, "study A\n", "", {}, false);
