@@ -9,13 +9,13 @@
 
 namespace mhb {
 
-// The CRC-32C of `bytes`, continuing from `crc` (the CRC of the bytes before them; 0 to start).
-// With the processor's crc32 instruction (SSE4.2) where it has one, from tables otherwise.
-std::uint32_t crc32c(std::string_view bytes, std::uint32_t crc = 0);
+// The CRC-32C of `bytes`.
+// With the processor's crc32 instruction (SSE4.2) where it has one, with Boost.CRC otherwise.
+std::uint32_t crc32c(std::string_view bytes);
 
 namespace detail {
-// The same from tables alone, whatever the processor (for tests of both ways).
-std::uint32_t crc32c_tables(std::string_view bytes, std::uint32_t crc = 0);
+// The same by Boost.CRC, whatever the processor (for tests of both ways).
+std::uint32_t crc32c_portable(std::string_view bytes);
 } // namespace detail
 
 } // namespace mhb

@@ -8,12 +8,12 @@ namespace mhb {
 namespace {
 
 TEST(Crc32c, MatchesTheStandardCheckValue) {
-    for (const auto crc : {&crc32c, &detail::crc32c_tables}) { // the instruction's way, and the tables'
-        EXPECT_EQ(crc("123456789", 0), 0xE3069283U);           // the catalogue's "check" for CRC-32/ISCSI
-        EXPECT_EQ(crc("", 0), 0U);
+    for (const auto crc : {&crc32c, &detail::crc32c_portable}) { // the instruction's way, and Boost.CRC's
+        EXPECT_EQ(crc("123456789"), 0xE3069283U);                // the catalogue's "check" for CRC-32/ISCSI
+        EXPECT_EQ(crc(""), 0U);
         // RFC 3720 (iSCSI), B.4: 32 bytes of zeros, and of 0xff.
-        EXPECT_EQ(crc(std::string(32, '\0'), 0), 0x8A9136AAU);
-        EXPECT_EQ(crc(std::string(32, '\xff'), 0), 0x62A8AB43U);
+        EXPECT_EQ(crc(std::string(32, '\0')), 0x8A9136AAU);
+        EXPECT_EQ(crc(std::string(32, '\xff')), 0x62A8AB43U);
     }
 }
 
@@ -23,21 +23,15 @@ TEST(Crc32c, BothWaysAgreeOnEveryLengthAndAlignment) {
         bytes.push_back(static_cast<char>((i * 131 + 7) & 0xff));
     for (std::size_t start = 0; start < 9; ++start)
         for (std::size_t length = 0; start + length <= bytes.size(); length += 13)
-            EXPECT_EQ(crc32c(std::string_view(bytes).substr(start, length), 0x1234U),
-                      detail::crc32c_tables(std::string_view(bytes).substr(start, length), 0x1234U));
+            EXPECT_EQ(crc32c(std::string_view(bytes).substr(start, length)),
+                      detail::crc32c_portable(std::string_view(bytes).substr(start, length)));
 }
 
-TEST(Crc32c, ContinuesAcrossPiecesAndSeesEveryFlippedBit) {
+TEST(Crc32c, SeesEveryFlippedBit) {
     std::string bytes;
     for (int i = 0; i < 1000; ++i)
         bytes.push_back(static_cast<char>((i * 37) & 0xff));
     const std::uint32_t whole = crc32c(bytes);
-    // Every split (the 8-byte steps and the byte-at-a-time tail must agree).
-    for (std::size_t split = 0; split <= 17; ++split)
-        EXPECT_EQ(
-            crc32c(std::string_view(bytes).substr(split), crc32c(std::string_view(bytes).substr(0, split))),
-            whole)
-            << split;
     for (std::size_t at = 0; at < bytes.size(); at += 7)
         for (int bit = 0; bit < 8; ++bit) {
             std::string damaged = bytes;
