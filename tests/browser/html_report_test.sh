@@ -86,7 +86,7 @@ check_report() { # NAME STUDY_DIR
     local page="$report/index.html" url="file://$2/report/index.html"
     [ -f "$page" ] || { fail "$name: $page was not written"; return; }
     local tables figures
-    tables="$(find "$report" -name '*.md' ! -name report.md | wc -l | tr -d ' ')"
+    tables="$(find "$report" -name '*.md' ! -name report.md ! -name README.md | wc -l | tr -d ' ')"
     figures="$(find "$report" -path '*/figures/*' -name '*.svg' ! -name '.*' | wc -l | tr -d ' ')"
     echo "$name: $tables tables, $figures figures, $(wc -c <"$page" | tr -d ' ') bytes"
     [ "$tables" -gt 0 ] || fail "$name: no table file in $report"
