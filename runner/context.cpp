@@ -18,22 +18,6 @@
 namespace mhb {
 namespace {
 
-std::string utc_now() {
-    const std::time_t now = std::time(nullptr);
-    std::tm utc{};
-    gmtime_r(&now, &utc);
-    char buf[32];
-    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
-    return buf;
-}
-
-std::string host_name() {
-    char buf[256] = {};
-    if (gethostname(buf, sizeof buf - 1) != 0)
-        return "unknown";
-    return buf;
-}
-
 // Quotes an argument for a POSIX shell when it needs it, so the line can be pasted back.
 std::string shell_quote(const std::string& arg) {
     if (!arg.empty() && arg.find_first_of(" \t\n'\"\\$`*?[]{}()<>|&;#~") == std::string::npos)
@@ -95,6 +79,22 @@ std::string library_versions() {
 
 } // namespace
 
+std::string host_name() {
+    char buf[256] = {};
+    if (gethostname(buf, sizeof buf - 1) != 0)
+        return "unknown";
+    return buf;
+}
+
+std::string utc_now(const char* format) {
+    const std::time_t now = std::time(nullptr);
+    std::tm utc{};
+    gmtime_r(&now, &utc);
+    char buf[64];
+    std::strftime(buf, sizeof buf, format, &utc);
+    return buf;
+}
+
 std::string context_ini(int threads, const std::vector<std::string>& command_line) {
     std::string command;
     for (const auto& arg : command_line) {
@@ -113,7 +113,7 @@ std::string context_ini(int threads, const std::vector<std::string>& command_lin
     text += "cpu = " + cpu_model() + '\n';
     text += "os = " + operating_system() + '\n';
     text += "libraries = " + library_versions() + '\n';
-    text += "date_utc = " + utc_now() + '\n';
+    text += "date_utc = " + utc_now("%Y-%m-%dT%H:%M:%SZ") + '\n';
     text += "hostname = " + host_name() + '\n';
     text += "command = " + command + '\n';
     return text;

@@ -15,6 +15,11 @@
 
 namespace mhb {
 
+// This machine's host name ("unknown" when it cannot be read).
+std::string host_name();
+// The time now, UTC, in strftime's `format` (context.ini: "%Y-%m-%dT%H:%M:%SZ").
+std::string utc_now(const char* format);
+
 // `command_line` is argv as given (quoted here when an argument holds spaces).
 std::string context_ini(int threads, const std::vector<std::string>& command_line);
 

@@ -11,22 +11,10 @@
 #include <thread>
 #include <unistd.h>
 
+#include "runner/context.hpp"
+
 namespace mhb {
 namespace {
-
-std::string utc_now() {
-    const std::time_t now = std::time(nullptr);
-    std::tm utc{};
-    gmtime_r(&now, &utc);
-    char buf[32];
-    std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S UTC", &utc);
-    return buf;
-}
-
-std::string host_name() {
-    char buf[256] = {};
-    return gethostname(buf, sizeof buf - 1) == 0 ? buf : "unknown";
-}
 
 std::string system_error(const std::filesystem::path& path, const char* what, int error) {
     return path.string() + ": " + what + " (" + std::strerror(error) + ")";
@@ -76,7 +64,7 @@ std::string value_of(const std::string& text, const std::string& key) {
 
 std::string study_lock_text(const std::string& command) {
     return "command = " + command + "\npid = " + std::to_string(::getpid()) + "\nhost = " + host_name() +
-           "\nsince = " + utc_now() + "\n";
+           "\nsince = " + utc_now("%Y-%m-%d %H:%M:%S UTC") + "\n";
 }
 
 std::string study_lock_holder(const std::string& text) {
