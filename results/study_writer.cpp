@@ -166,12 +166,17 @@ std::string runs_csv_header(const std::vector<std::string>& parameter_columns) {
 
 namespace {
 
-// Whether `dir` holds anything besides the lock its writer takes before creating the study.
+// Whether `dir` holds anything besides what a writer leaves before the study's marker exists: the
+// lock it takes first, and the marker's temporary file when it was killed while writing it (the
+// marker is the first file a study writes).
 bool holds_other_files(const fs::path& dir) {
+    const std::string marker_in_writing = std::string(StudyFiles::marker) + ".tmp";
     std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(dir, ec))
-        if (entry.path().filename() != StudyFiles::lock)
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (name != StudyFiles::lock && name != marker_in_writing)
             return true;
+    }
     return false;
 }
 

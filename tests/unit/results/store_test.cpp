@@ -242,6 +242,24 @@ TEST(Store, UnwritableOutputIsAClearError) {
     }
 }
 
+// A writer killed before its study's marker was whole leaves the lock file and the marker's
+// temporary file: the same command must take the directory up again, and any other file still
+// makes it "not a mhbench study".
+TEST(Store, ADirectoryKilledBeforeItsMarkerWasWholeIsTakenUpAgain) {
+    const fs::path dir = fresh_dir("killed_before_marker");
+    fs::create_directories(dir);
+    std::ofstream(dir / StudyFiles::lock) << "command = mhbench run\n";
+    std::ofstream(dir / (std::string(StudyFiles::marker) + ".tmp")) << "mhbench stu";
+    EXPECT_NO_THROW(StudyWriter(dir, "s\n", "", {}, false));
+    EXPECT_TRUE(fs::exists(dir / StudyFiles::marker));
+
+    const fs::path other = fresh_dir("killed_before_marker_other");
+    fs::create_directories(other);
+    std::ofstream(other / StudyFiles::lock) << "command = mhbench run\n";
+    std::ofstream(other / "notes.txt") << "mine";
+    EXPECT_THROW(StudyWriter(other, "s\n", "", {}, false), std::runtime_error);
+}
+
 TEST(Csv, QuotesAndSplitsAndNumbersRoundTrip) {
     EXPECT_EQ(csv_field("a,b"), "\"a,b\"");
     EXPECT_EQ(csv_split("1,\"a,\"\"b\"\"\",,x"), (std::vector<std::string>{"1", "a,\"b\"", "", "x"}));
