@@ -119,12 +119,16 @@ std::string context_ini(int threads, const std::vector<std::string>& command_lin
     return text;
 }
 
-std::string context_field(const std::string& context_text, const std::string& key) {
-    std::istringstream in(context_text);
+std::optional<std::string> first_field(const std::string& text, const std::string& key) {
+    std::istringstream in(text);
     for (std::string line; std::getline(in, line);)
         if (line.rfind(key + " = ", 0) == 0)
             return line.substr(key.size() + 3);
-    return "unknown";
+    return std::nullopt;
+}
+
+std::string context_field(const std::string& context_text, const std::string& key) {
+    return first_field(context_text, key).value_or("unknown");
 }
 
 std::string context_sessions(const std::string& context_text) {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,8 @@ std::string utc_now(const char* format);
 // `command_line` is argv as given (quoted here when an argument holds spaces).
 std::string context_ini(int threads, const std::vector<std::string>& command_line);
 
+// The value of the first "key = value" line of a text (context.ini, a lock file), if it has one.
+std::optional<std::string> first_field(const std::string& text, const std::string& key);
 // The value of the first "key = value" line of a context.ini (the latest session's), or "unknown".
 std::string context_field(const std::string& context_text, const std::string& key);
 

@@ -5,7 +5,6 @@
 #include <cstring>
 #include <ctime>
 #include <fcntl.h>
-#include <sstream>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <thread>
@@ -53,11 +52,7 @@ bool is_file_at(int fd, const std::filesystem::path& path) {
 }
 
 std::string value_of(const std::string& text, const std::string& key) {
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind(key + " = ", 0) == 0)
-            return line.substr(key.size() + 3);
-    return "";
+    return first_field(text, key).value_or("");
 }
 
 } // namespace
