@@ -139,6 +139,10 @@ CsvTable read_csv(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw std::runtime_error(path.string() + ": cannot be opened (missing?)");
+    return parse_csv(in, path);
+}
+
+CsvTable parse_csv(std::istream& in, const std::filesystem::path& path) {
     CsvTable table;
     table.path = path;
     std::string line;

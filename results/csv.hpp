@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -39,6 +40,8 @@ struct CsvTable {
 // Reads a whole CSV file written by mhbench. Throws std::runtime_error with the file and line
 // when it is missing, empty, or a row has the wrong number of fields (e.g. a truncated file).
 CsvTable read_csv(const std::filesystem::path& path);
+// The same from text already read (`path` names it in errors).
+CsvTable parse_csv(std::istream& in, const std::filesystem::path& path);
 
 // The whole content of a file; throws std::runtime_error naming it when it cannot be opened.
 std::string read_whole_file(const std::filesystem::path& path);

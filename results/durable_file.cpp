@@ -44,23 +44,9 @@ void sync_file(int fd, const std::filesystem::path& path) {
         fail(path, errno);
 }
 
-void sync_file(const std::filesystem::path& path) {
-    sync_path(path, O_RDONLY);
-}
-
 void start_writeback(int fd) {
     if (syncs_enabled())
         (void)::sync_file_range(fd, 0, 0, SYNC_FILE_RANGE_WRITE); // a hint: an error shows at the sync
-}
-
-void start_writeback(const std::filesystem::path& path) {
-    if (!syncs_enabled())
-        return;
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd >= 0) {
-        start_writeback(fd);
-        ::close(fd);
-    }
 }
 
 void sync_directory(const std::filesystem::path& dir) {

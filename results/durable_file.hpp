@@ -13,13 +13,10 @@ bool syncs_enabled();
 
 // fdatasync of an open file; throws std::runtime_error naming `path` when the disk reports an error.
 void sync_file(int fd, const std::filesystem::path& path);
-// fsync of the file at `path` (opened for the purpose).
-void sync_file(const std::filesystem::path& path);
 // fsync of a directory, so that the renames and creations in it are on disk.
 void sync_directory(const std::filesystem::path& dir);
 // Starts writing the file's dirty pages to disk without waiting for them, so that the sync at the
 // end finds little left to write (the disk works while the program computes).
 void start_writeback(int fd);
-void start_writeback(const std::filesystem::path& path);
 
 } // namespace mhb

@@ -18,6 +18,8 @@
 //   algorithms.csv   one row per algorithm of the study: its canonical spec, its display label
 //                    and its full spec (every parameter, defaults included)
 //   timings.csv      wall seconds per run (the one thing that varies between two runs)
+//   .mhbench-study   the marker (below); once finished, the study.ini and run count runs.csv was
+//                    rendered for, and the size and CRC-32C of each rendered file (RenderedFile)
 //
 // A directory is a study when it holds .mhbench-study (or, from before that marker, study.ini
 // with runs.csv or journal.txt); it is a finished study exactly when runs.csv exists, written
@@ -229,11 +231,25 @@ bool is_study_directory(const std::filesystem::path& dir);
 // The header of runs.csv for the given parameter columns.
 std::string runs_csv_header(const std::vector<std::string>& parameter_columns);
 
+// A file rendered from the store (runs.csv, curves.csv, ...) as it was written: its size and
+// CRC-32C. These files are not synced (the store they are rendered from is, and they are 100 MB
+// for 10^5 runs): the marker, which is synced, names them, and load_study refuses any that a
+// crash of the machine left different (rendered again by running the same command again).
+struct RenderedFile {
+    std::string name;
+    std::uint64_t size = 0;
+    std::uint32_t checksum = 0; // CRC-32C
+};
+
 // The text of .mhbench-study: the format, and once a study is finished, the checksum of the
-// study.ini its runs.csv was rendered for and the number of runs in it (`runs` < 0: unfinished).
-std::string study_marker(std::string_view study_text, std::int64_t runs = -1);
+// study.ini its runs.csv was rendered for, the number of runs in it (`runs` < 0: unfinished) and
+// each rendered file's size and checksum ("runs.csv = 1234 bytes, crc32c 0a1b2c3d").
+std::string study_marker(std::string_view study_text, std::int64_t runs = -1,
+                         const std::vector<RenderedFile>& rendered = {});
 // The CRC-32C of a study.ini's text, in hex, as the marker names it.
 std::string study_checksum(std::string_view study_text);
+// How the marker states a rendered file: "1234 bytes, crc32c 0a1b2c3d".
+std::string rendered_file_facts(std::uint64_t size, std::uint32_t checksum);
 
 struct StudyData {
     std::filesystem::path directory;

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "results/crc32c.hpp"
 #include "results/csv.hpp"
 #include "results/store.hpp"
 
@@ -51,11 +52,8 @@ std::optional<std::string> marker_value(const std::string& text, const std::stri
 // runs.csv must be the one rendered for this study.ini: two processes writing into one directory
 // could leave one study's runs beside the other's study.ini. Markers from before the check name
 // no study.ini, and are read as they are.
-void check_runs_belong_to_study(const fs::path& dir, const StudyData& data, std::size_t runs) {
-    const fs::path marker = dir / StudyFiles::marker;
-    if (!fs::exists(marker))
-        return;
-    const std::string text = read_whole_file(marker);
+void check_runs_belong_to_study(const fs::path& dir, const StudyData& data, std::size_t runs,
+                                const std::string& text) {
     const auto checksum = marker_value(text, "study.ini crc32c");
     if (checksum && *checksum != study_checksum(data.study_text))
         throw std::runtime_error((dir / StudyFiles::runs).string() +
@@ -67,6 +65,31 @@ void check_runs_belong_to_study(const fs::path& dir, const StudyData& data, std:
         throw std::runtime_error((dir / StudyFiles::runs).string() + ": has " + std::to_string(runs) +
                                  (runs == 1 ? " row" : " rows") + ", but the study it was rendered for has " +
                                  *count + " runs");
+}
+
+// The marker's text, or "" for a study from before markers.
+std::string marker_text(const fs::path& dir) {
+    const fs::path marker = dir / StudyFiles::marker;
+    return fs::exists(marker) ? read_whole_file(marker) : std::string();
+}
+
+// A file rendered from the store, read only when it is exactly what the study wrote: its size and
+// CRC-32C are in the marker (not in markers from before the check), and the file itself was not
+// synced, so a crash of the machine after the study finished may have left it short or stale.
+CsvTable read_rendered_csv(const fs::path& dir, const char* name, const std::string& marker) {
+    const fs::path path = dir / name;
+    const auto written = marker_value(marker, name);
+    if (!written)
+        return read_csv(path);
+    std::string text = read_whole_file(path);
+    const std::string found = rendered_file_facts(text.size(), crc32c(text));
+    if (found != *written)
+        throw std::runtime_error(path.string() + ": is not the file the study wrote (" + found + ", not " +
+                                 *written +
+                                 "; the machine stopped before it reached the disk?); run the study's "
+                                 "command again to render it from store.bin");
+    std::istringstream in(std::move(text));
+    return parse_csv(in, path);
 }
 
 } // namespace
@@ -93,8 +116,9 @@ StudyData load_study(const fs::path& dir) {
                                        row[algorithms.column("parameters")]});
     }
 
-    const CsvTable runs = read_csv(dir / StudyFiles::runs);
-    check_runs_belong_to_study(dir, data, runs.rows.size());
+    const std::string marker = marker_text(dir);
+    const CsvTable runs = read_rendered_csv(dir, StudyFiles::runs, marker);
+    check_runs_belong_to_study(dir, data, runs.rows.size(), marker);
     const std::size_t first_parameter = runs.column("best_x") + 1;
     const std::size_t message_column = runs.column("message");
     constexpr std::size_t per_parameter = 4; // P, P_true, P_opt, P_err_pct
@@ -158,7 +182,7 @@ StudyData load_study(const fs::path& dir) {
         data.runs.push_back(std::move(r));
     }
 
-    const CsvTable curves = read_csv(dir / StudyFiles::curves);
+    const CsvTable curves = read_rendered_csv(dir, StudyFiles::curves, marker);
     for (std::size_t row = 0; row < curves.rows.size(); ++row) {
         const auto id = find_run(index, curves, row);
         data.runs[index[id]].curve.push_back({curves.integer(row, curves.column("iteration")),
@@ -166,14 +190,14 @@ StudyData load_study(const fs::path& dir) {
                                               curves.number(row, curves.column("best_f")),
                                               {}});
     }
-    const CsvTable checkpoints = read_csv(dir / StudyFiles::checkpoints);
+    const CsvTable checkpoints = read_rendered_csv(dir, StudyFiles::checkpoints, marker);
     for (std::size_t row = 0; row < checkpoints.rows.size(); ++row) {
         const auto id = find_run(index, checkpoints, row);
         data.runs[index[id]].checkpoints.push_back(
             {checkpoints.integer(row, checkpoints.column("evaluations")),
              checkpoints.number(row, checkpoints.column("best_f"))});
     }
-    const CsvTable trajectories = read_csv(dir / StudyFiles::trajectories);
+    const CsvTable trajectories = read_rendered_csv(dir, StudyFiles::trajectories, marker);
     for (std::size_t row = 0; row < trajectories.rows.size(); ++row) {
         const auto id = find_run(index, trajectories, row);
         RunRecord& r = data.runs[index[id]];
@@ -192,7 +216,7 @@ StudyData load_study(const fs::path& dir) {
     }
     // Studies written before improvements were recorded have no such file: their runs keep none.
     if (fs::exists(dir / StudyFiles::improvements)) {
-        const CsvTable improvements = read_csv(dir / StudyFiles::improvements);
+        const CsvTable improvements = read_rendered_csv(dir, StudyFiles::improvements, marker);
         const std::size_t event = improvements.column("event");
         const std::size_t evaluations = improvements.column("evaluations");
         const std::size_t f = improvements.column("f");
@@ -220,7 +244,7 @@ StudyData load_study(const fs::path& dir) {
             trace.points.push_back(point);
         }
     }
-    const CsvTable timings = read_csv(dir / StudyFiles::timings);
+    const CsvTable timings = read_rendered_csv(dir, StudyFiles::timings, marker);
     for (std::size_t row = 0; row < timings.rows.size(); ++row)
         data.wall_seconds[find_run(index, timings, row)] =
             timings.number(row, timings.column("wall_seconds"));

@@ -183,17 +183,22 @@ bool holds_other_files(const fs::path& dir) {
 } // namespace
 
 std::string study_checksum(std::string_view study_text) {
-    char hex[16];
-    std::snprintf(hex, sizeof hex, "%08x", crc32c(study_text));
-    return hex;
+    return crc32c_hex(crc32c(study_text));
 }
 
-std::string study_marker(std::string_view study_text, std::int64_t runs) {
+std::string rendered_file_facts(std::uint64_t size, std::uint32_t checksum) {
+    return std::to_string(size) + " bytes, crc32c " + crc32c_hex(checksum);
+}
+
+std::string study_marker(std::string_view study_text, std::int64_t runs,
+                         const std::vector<RenderedFile>& rendered) {
     std::string text = "mhbench study directory, format 3\n";
     if (runs < 0)
         return text;
-    return text + "study.ini crc32c = " + study_checksum(study_text) + "\nruns = " + std::to_string(runs) +
-           '\n';
+    text += "study.ini crc32c = " + study_checksum(study_text) + "\nruns = " + std::to_string(runs) + '\n';
+    for (const RenderedFile& file : rendered)
+        text += file.name + " = " + rendered_file_facts(file.size, file.checksum) + '\n';
+    return text;
 }
 
 bool is_study_directory(const fs::path& dir) {
@@ -643,6 +648,12 @@ void StudyWriter::render_files(const std::vector<std::int64_t>& ids) {
         fs::path path;
         fs::path temporary;
         std::ofstream out;
+        RenderedFile written; // size and checksum of what went to `out`, for the marker
+        void put(std::string_view text) {
+            out << text;
+            written.size += text.size();
+            written.checksum = crc32c(text, written.checksum);
+        }
     };
     struct Temporaries {
         std::vector<fs::path> paths; // not renamed yet
@@ -656,6 +667,7 @@ void StudyWriter::render_files(const std::vector<std::int64_t>& ids) {
         Output o;
         o.path = dir_ / name;
         o.temporary = dir_ / (std::string(name) + ".tmp");
+        o.written.name = name;
         errno = 0;
         o.out.open(o.temporary, std::ios::binary | std::ios::trunc);
         if (!o.out)
@@ -670,29 +682,20 @@ void StudyWriter::render_files(const std::vector<std::int64_t>& ids) {
     Output trajectories = open(StudyFiles::trajectories);
     Output improvements = open(StudyFiles::improvements);
     Output timings = open(StudyFiles::timings);
-    runs.out << runs_csv_header(parameter_columns_);
-    curves.out << "run_id,iteration,evaluations,best_f\n";
-    checkpoints.out << "run_id,evaluations,best_f\n";
-    trajectories.out << "run_id,iteration";
+    runs.put(runs_csv_header(parameter_columns_));
+    curves.put("run_id,iteration,evaluations,best_f\n");
+    checkpoints.put("run_id,evaluations,best_f\n");
+    std::string trajectory_header = "run_id,iteration";
     for (const auto& p : parameter_columns_)
-        trajectories.out << "," << p;
-    trajectories.out << '\n';
-    improvements.out << "run_id,event,evaluations,f\n";
-    timings.out << "run_id,wall_seconds\n";
+        trajectory_header += "," + p;
+    trajectories.put(trajectory_header + '\n');
+    improvements.put("run_id,event,evaluations,f\n");
+    timings.put("run_id,wall_seconds\n");
 
     summary_ = StudySummary{};
     // Records are decoded and rendered in parallel, a chunk of runs at a time, and written in
     // run_id order: the output is the same bytes as a serial loop's.
     constexpr std::size_t chunk = 512;
-    // Every 32 chunks (16 384 runs, a few MB a file) the disk starts on what is written, so that
-    // the syncs before the renames find little left to write.
-    std::size_t chunks_written = 0;
-    const auto start_writing_back = [&] {
-        for (Output* o : {&runs, &curves, &checkpoints, &trajectories, &improvements, &timings}) {
-            o->out.flush();
-            start_writeback(o->temporary);
-        }
-    };
     struct Rendered {
         Block text;
         StudySummary summary;
@@ -763,14 +766,12 @@ void StudyWriter::render_files(const std::vector<std::int64_t>& ids) {
                 }) &
             tbb::make_filter<std::shared_ptr<Rendered>, void>(
                 tbb::filter_mode::serial_in_order, [&](const std::shared_ptr<Rendered>& part) {
-                    runs.out << part->text.run_line;
-                    curves.out << part->text.curve_lines;
-                    checkpoints.out << part->text.checkpoint_lines;
-                    trajectories.out << part->text.trajectory_lines;
-                    improvements.out << part->text.improvement_lines;
-                    timings.out << part->text.timing_line;
-                    if (++chunks_written % 32 == 0)
-                        start_writing_back();
+                    runs.put(part->text.run_line);
+                    curves.put(part->text.curve_lines);
+                    checkpoints.put(part->text.checkpoint_lines);
+                    trajectories.put(part->text.trajectory_lines);
+                    improvements.put(part->text.improvement_lines);
+                    timings.put(part->text.timing_line);
                     summary_.runs += part->summary.runs;
                     summary_.failed += part->summary.failed;
                     summary_.evaluations += part->summary.evaluations;
@@ -778,14 +779,19 @@ void StudyWriter::render_files(const std::vector<std::int64_t>& ids) {
                         if (summary_.first_failures.size() < 3)
                             summary_.first_failures.push_back(std::move(failure));
                 }));
+    // The rendered files are not synced: the store they come from is, and the marker (synced
+    // before runs.csv appears) holds each one's size and checksum, so that load_study refuses one
+    // that a crash of the machine left short or stale. Syncing them cost 5-8 % of a study of
+    // 10^5 short runs (BENCHMARKS.md).
+    std::vector<RenderedFile> rendered;
     for (Output* o : {&curves, &checkpoints, &trajectories, &improvements, &timings, &runs}) {
         o->out.close();
         if (!o->out)
             throw std::runtime_error(o->path.string() + ": writing failed (" + std::strerror(errno) + ")");
-        sync_file(o->temporary);
-        if (o == &runs) // the study this runs.csv belongs to, for load_study to check
+        rendered.push_back(o->written);
+        if (o == &runs) // the study this runs.csv belongs to, and what it and the others hold
             write_file_atomically(dir_ / StudyFiles::marker,
-                                  study_marker(study_text_, static_cast<std::int64_t>(ids.size())));
+                                  study_marker(study_text_, static_cast<std::int64_t>(ids.size()), rendered));
         std::error_code ec;
         fs::rename(o->temporary, o->path, ec);
         if (ec)

@@ -67,6 +67,9 @@ std::string dataset_with(const std::string& sed) {
 
 const std::string tiny_run = " --problems sphere:dim=2 --runs 2 --evaluations 100 --no-report --out s";
 const std::string study_copy = "cp -r $F/study s";
+// The same as a study from before the marker held each rendered file's size and checksum, so
+// that an edited file reaches the CSV reader's own checks.
+const std::string old_study_copy = study_copy + " && sed -i '/ bytes, crc32c /d' s/.mhbench-study";
 
 // clang-format off
 std::vector<BadInput> catalogue() {
@@ -328,17 +331,22 @@ std::vector<BadInput> catalogue() {
         {study_copy + " && rm s/runs.csv", "report s", 1,
          says({"mhbench report: s: holds an unfinished study (no runs.csv yet); run the same command again to "
                "complete it"})},
-        {study_copy + " && head -c -7 $F/study/runs.csv > s/runs.csv", "report s --no-figures", 1, one_line("s/runs.csv, line ")},
-        {study_copy + " && sed -i '2s/,ok,/,maybe,/' s/runs.csv", "report s --no-figures", 1, one_line("s/runs.csv")},
-        {study_copy + " && sed -i '2s/^0,/zero,/' s/runs.csv", "report s --no-figures", 1,
+        {old_study_copy + " && head -c -7 $F/study/runs.csv > s/runs.csv", "report s --no-figures", 1, one_line("s/runs.csv, line ")},
+        {old_study_copy + " && sed -i '2s/,ok,/,maybe,/' s/runs.csv", "report s --no-figures", 1, one_line("s/runs.csv")},
+        {old_study_copy + " && sed -i '2s/^0,/zero,/' s/runs.csv", "report s --no-figures", 1,
          says({"mhbench report: s/runs.csv, line 2, column 'run_id': 'zero' is not an integer"})},
-        {study_copy + " && head -n 1 $F/study/runs.csv > s/runs.csv", "report s --no-figures", 1,
+        {old_study_copy + " && head -n 1 $F/study/runs.csv > s/runs.csv", "report s --no-figures", 1,
          says({"mhbench report: s/runs.csv: has 0 rows, but the study it was rendered for has 2 runs"})},
+        // a rendered file that is not what the study wrote (a crash of the machine): refused
+        {study_copy + " && sed -i '2s/^0,/zero,/' s/runs.csv", "report s --no-figures", 1,
+         one_line("s/runs.csv: is not the file the study wrote (")},
+        {study_copy + " && head -c 100 $F/study/curves.csv > s/curves.csv", "report s --no-figures", 1,
+         one_line("s/curves.csv: is not the file the study wrote (100 bytes, crc32c ")},
         {study_copy + " && rm s/trajectories.csv", "report s --no-figures", 1, one_line("s/trajectories.csv")},
         // runs.csv must be the one rendered for the study.ini beside it (issue 22)
         {study_copy + " && echo '# edited' >> s/study.ini", "report s --no-figures", 1,
          one_line("s/runs.csv: was rendered for another study.ini than the one beside it (crc32c ")},
-        {study_copy + " && sed -i '$d' s/runs.csv", "report s --no-figures", 1,
+        {old_study_copy + " && sed -i '$d' s/runs.csv", "report s --no-figures", 1,
          says({"mhbench report: s/runs.csv: has 1 row, but the study it was rendered for has 2 runs"})},
         // an error inside finish() leaves no .tmp file (issue 22)
         {study_copy + " && rm s/runs.csv && mkdir s/runs.csv",

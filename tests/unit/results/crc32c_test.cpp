@@ -8,8 +8,10 @@ namespace mhb {
 namespace {
 
 TEST(Crc32c, MatchesTheStandardCheckValue) {
-    for (const auto crc : {&crc32c, &detail::crc32c_portable}) { // the instruction's way, and Boost.CRC's
-        EXPECT_EQ(crc("123456789"), 0xE3069283U);                // the catalogue's "check" for CRC-32/ISCSI
+    using Crc = std::uint32_t (*)(std::string_view);
+    const Crc portable = [](std::string_view bytes) { return detail::crc32c_portable(bytes); };
+    for (const Crc crc : {static_cast<Crc>(&crc32c), portable}) { // the instruction's way, and Boost.CRC's
+        EXPECT_EQ(crc("123456789"), 0xE3069283U);                 // the catalogue's "check" for CRC-32/ISCSI
         EXPECT_EQ(crc(""), 0U);
         // RFC 3720 (iSCSI), B.4: 32 bytes of zeros, and of 0xff.
         EXPECT_EQ(crc(std::string(32, '\0')), 0x8A9136AAU);
@@ -25,6 +27,19 @@ TEST(Crc32c, BothWaysAgreeOnEveryLengthAndAlignment) {
         for (std::size_t length = 0; start + length <= bytes.size(); length += 13)
             EXPECT_EQ(crc32c(std::string_view(bytes).substr(start, length)),
                       detail::crc32c_portable(std::string_view(bytes).substr(start, length)));
+}
+
+TEST(Crc32c, ContinuesFromThePreviousPartsChecksum) {
+    std::string bytes;
+    for (int i = 0; i < 200; ++i)
+        bytes.push_back(static_cast<char>((i * 59 + 3) & 0xff));
+    const std::string_view all(bytes);
+    for (std::size_t cut = 0; cut <= all.size(); cut += 11) {
+        EXPECT_EQ(crc32c(all.substr(cut), crc32c(all.substr(0, cut))), crc32c(all)) << cut;
+        EXPECT_EQ(detail::crc32c_portable(all.substr(cut), detail::crc32c_portable(all.substr(0, cut))),
+                  crc32c(all))
+            << cut;
+    }
 }
 
 TEST(Crc32c, SeesEveryFlippedBit) {

@@ -138,6 +138,9 @@ TEST(IohStore, AMalformedImprovementsFileIsOneClearError) {
         writer.append(record(0, 0, true), 1.0);
         writer.finish();
     }
+    // As a study from before the marker held the rendered files' checksums, so that the edited
+    // file reaches the reader's own checks.
+    write_file_atomically(dir / StudyFiles::marker, study_marker("study", 1));
     const auto expect_error = [&](const std::string& content, const std::string& part) {
         std::ofstream(dir / StudyFiles::improvements) << content;
         try {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <span>
 
 #include "results/csv.hpp"
 #include "results/record_codec.hpp"
@@ -276,6 +277,11 @@ TEST(StoreIntegrity, LoadStudyRefusesRunsRenderedForAnotherStudyIni) {
     write_bytes(dir / "study.ini", study);
     const std::string runs = read_whole_file(dir / "runs.csv");
     write_bytes(dir / "runs.csv", runs.substr(0, runs.rfind('\n', runs.size() - 2) + 1)); // the last run gone
+    // The marker's size and checksum of runs.csv see it first; a marker from before those were
+    // written still has the number of runs.
+    const std::string marker = read_whole_file(dir / ".mhbench-study");
+    EXPECT_THROW((void)load_study(dir), std::runtime_error);
+    write_bytes(dir / ".mhbench-study", marker.substr(0, marker.find("curves.csv = ")));
     try {
         (void)load_study(dir);
         FAIL();
@@ -284,6 +290,36 @@ TEST(StoreIntegrity, LoadStudyRefusesRunsRenderedForAnotherStudyIni) {
             std::string(e.what()).find("runs.csv: has 2 rows, but the study it was rendered for has 3 runs"),
             std::string::npos)
             << e.what();
+    }
+}
+
+// The rendered files are not synced (the store is): after a crash of the machine one may be
+// short, zeros or the previous study's, and load_study must refuse it, not read it, until the
+// same command renders it again from the store.
+TEST(StoreIntegrity, ARenderedFileTheDiskLostIsRefusedAndRenderedAgain) {
+    const fs::path reference = clean_study(3);
+    const std::string marker = read_whole_file(reference / ".mhbench-study");
+    for (const char* name : std::span(rendered_files).first(6)) { // the CSV files
+        const std::string facts = std::to_string(fs::file_size(reference / name)) + " bytes, crc32c ";
+        EXPECT_NE(marker.find(std::string(name) + " = " + facts), std::string::npos) << marker;
+        const std::string bytes = bytes_of(reference / name);
+        for (const std::string& after_crash :
+             {std::string(), bytes.substr(0, bytes.size() / 2), std::string(bytes.size(), '\0')}) {
+            const fs::path dir = fresh_dir("lost_" + std::string(name) + std::to_string(after_crash.size()));
+            fs::copy(reference, dir);
+            write_bytes(dir / name, after_crash);
+            try {
+                (void)load_study(dir);
+                FAIL() << name << " damaged was read";
+            } catch (const std::runtime_error& e) {
+                EXPECT_NE(std::string(e.what()).find(std::string(name) + ": is not the file the study wrote"),
+                          std::string::npos)
+                    << e.what();
+                EXPECT_NE(std::string(e.what()).find("run the study's command again"), std::string::npos);
+            }
+            open_study(dir, 3).finish(); // the same command: every run is in the store
+            expect_same_files(dir, reference);
+        }
     }
 }
 
