@@ -22,6 +22,7 @@ int run_simulate_command(const std::vector<std::string>& args);
 int run_identify_command(const std::vector<std::string>& args);
 int run_eval_command(const std::vector<std::string>& args);
 int run_merge_command(const std::vector<std::string>& args);
+int run_plugin_check_command(const std::vector<std::string>& args);
 
 namespace {
 
@@ -36,6 +37,8 @@ const std::vector<Command>& commands() {
         {"eval", "print f at given points (check a function by hand)", run_eval_command},
         {"merge", "join the shard directories of one study (mhbench run --shard i/n) into one",
          run_merge_command},
+        {"plugin-check", "check that an optimiser or a problem (your own: a plug-in) is fit for a study",
+         run_plugin_check_command},
     };
     return table;
 }

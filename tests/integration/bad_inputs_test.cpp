@@ -323,6 +323,13 @@ std::vector<BadInput> catalogue() {
          "eval --problem schwefel_2_22:dim=30,bound=1e12 --points p.txt", 0, says({})},
         {"", "eval --problem sphere:dim=2 --points - < /dev/null", 0, says({})},
 
+        // ---- plugin-check
+        {"", "plugin-check", 2,
+         says({"mhbench plugin-check: give --algorithm SPEC, --problem SPEC or both (see mhbench plugin-check --help)"})},
+        {"", "plugin-check --algorithm nope", 2, one_line("mhbench plugin-check: unknown algorithm 'nope'; known: ")},
+        {"", "plugin-check --problem sphere:dim=2 --runs 0", 2,
+         says({"mhbench plugin-check: --runs = 0 is outside [1, 1000]"})},
+
         // ---- report and study directories
         {"", "report", 2, says({"mhbench report: give the study directory (mhbench report DIR; see --help)"})},
         {"", "report nowhere", 1, says({"mhbench report: nowhere: is not a directory"})},
