@@ -48,15 +48,15 @@ po::options_description study_options() {
         ("budgets", po::value<specs>()->multitoken()->composing(), "same as --budget")
         ("target", po::value<std::string>(),
          "also stop a run once best f - f* <= this (problems with a known optimum); applies to every budget")
+        ("protocol", po::value<std::string>(),
+         "follow a CEC competition protocol: cec2017 or cec2022 (none: no protocol). The report adds the "
+         "competition's tables per dimension and the organisers' result files (report/cec/); the problems "
+         "must be of that suite and the budget give evaluations. The presets cec2017 and cec2022 set it")
         ("plugins", po::value<specs>()->multitoken()->composing(),
          "plug-in modules (shared libraries built with mhbench_add_plugin) whose optimisers and problems the "
          "study names; the option may be repeated. Their names must differ from every other; each module's "
          "SHA-256 joins the identity of its runs, so a rebuilt plug-in is noticed on resume")
-        ("plugin", po::value<specs>()->multitoken()->composing(), "same as --plugins")
-        ("protocol", po::value<std::string>(),
-         "follow a CEC competition protocol: cec2017 or cec2022 (none: no protocol). The report adds the "
-         "competition's tables per dimension and the organisers' result files (report/cec/); the problems "
-         "must be of that suite and the budget give evaluations. The presets cec2017 and cec2022 set it");
+        ("plugin", po::value<specs>()->multitoken()->composing(), "same as --plugins");
     // clang-format on
     return d;
 }
