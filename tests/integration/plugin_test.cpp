@@ -55,6 +55,22 @@ TEST(PluginCli, StudyIniRecordsThePluginSoThatTheStudyFileResumesIt) {
     std::filesystem::remove_all(dir);
 }
 
+TEST(PluginCli, MergeLoadsThePluginsOfTheShardsStudyIni) {
+    const auto dir = scratch_directory() / "merged";
+    std::filesystem::remove_all(dir);
+    const std::string plugin = test_plugins + "/test_plugin_booth.so";
+    for (const char* shard : {"1", "2"}) {
+        const auto r = run_mhbench("run --plugin " + shell_quoted(plugin) + " " + example_study +
+                                   " --shard " + shard + "/2 --out " + shell_quoted(dir / shard));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    const auto r = run_mhbench("merge " + shell_quoted(dir / "all") + " " + shell_quoted(dir / "1") + " " +
+                               shell_quoted(dir / "2") + " --no-report --quiet");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(lines_of(read_text(dir / "all" / "runs.csv")).size(), 13U); // the header and 12 runs
+    std::filesystem::remove_all(dir);
+}
+
 TEST(PluginCli, ListAndEvalShowThePluginsComponents) {
     const std::string plugin = test_plugins + "/test_plugin_booth.so";
     auto r = run_mhbench("list algorithms --plugin " + shell_quoted(plugin));
