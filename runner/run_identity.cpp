@@ -34,6 +34,19 @@ std::string version_fact(const std::string& name, const std::vector<int>& versio
     return version > 1 ? name + " = " + std::to_string(version) + '\n' : std::string();
 }
 
+// The fact line of a plug-in module's content; none for a built-in component, whose runs keep
+// the identity they had before plug-ins existed.
+std::string module_fact(const std::string& name, const std::vector<DataFile>& modules, std::size_t i) {
+    return i < modules.size() && !modules[i].sha256.empty() ? name + " = " + modules[i].sha256 + '\n'
+                                                            : std::string();
+}
+
+// The note naming a plug-in module's file, for messages.
+std::string module_note(const std::string& name, const std::vector<DataFile>& modules, std::size_t i) {
+    return i < modules.size() && !modules[i].path.empty() ? name + " = " + modules[i].path + '\n'
+                                                          : std::string();
+}
+
 // "pso" of "pso:w=0.7".
 std::string component_name(const std::string& spec) {
     return spec.substr(0, spec.find(':'));
@@ -49,13 +62,14 @@ RunKey run_key(const PreparedStudy& study, std::int64_t run_id) {
     RunKey key;
     key.algorithm = request.algorithm_spec;
     key.problem = request.problem_spec;
-    key.facts = "format = " + std::to_string(store_format_version) + '\n' +
-                "algorithm = " + request.algorithm_spec + '\n' +
-                version_fact("algorithm version", study.algorithm_versions, a) +
-                "problem = " + study.problem_identities[p] + '\n' +
-                version_fact("problem version", study.problem_versions, p) +
-                "budget = " + request.budget_text + '\n' + "run = " + std::to_string(request.run_index) +
-                '\n' + "seed = " + std::to_string(request.seed) + '\n';
+    key.facts =
+        "format = " + std::to_string(store_format_version) + '\n' + "algorithm = " + request.algorithm_spec +
+        '\n' + version_fact("algorithm version", study.algorithm_versions, a) +
+        module_fact("algorithm module", study.algorithm_modules, a) +
+        "problem = " + study.problem_identities[p] + '\n' +
+        version_fact("problem version", study.problem_versions, p) +
+        module_fact("problem module", study.problem_modules, p) + "budget = " + request.budget_text + '\n' +
+        "run = " + std::to_string(request.run_index) + '\n' + "seed = " + std::to_string(request.seed) + '\n';
     key.identity = sha256_hex(key.facts);
     const std::string& label =
         a < study.algorithms.size() ? study.algorithms[a].label : request.algorithm_spec;
@@ -63,7 +77,9 @@ RunKey run_key(const PreparedStudy& study, std::int64_t run_id) {
                std::to_string(request.run_index);
     key.notes = "label = " + label + '\n' + "problem as written = " + request.problem_spec + '\n' +
                 "study seed = " + std::to_string(study.study.seed) + '\n' +
-                "seeds = " + std::string(seed_mode_name(study.study.seeds)) + '\n';
+                "seeds = " + std::string(seed_mode_name(study.study.seeds)) + '\n' +
+                module_note("algorithm module file", study.algorithm_modules, a) +
+                module_note("problem module file", study.problem_modules, p);
     const auto files = study.problems[p]->data_files();
     for (std::size_t i = 0; i < files.size(); ++i)
         key.notes +=
@@ -99,6 +115,23 @@ std::string describe_run_change(const RunKey& stored, const RunKey& wanted) {
             return kind + " '" + component_name(value_or(new_facts, kind)) +
                    "': the stored runs were made by version " + before + ", this mhbench has version " +
                    after;
+    }
+    // A plug-in module rebuilt (or replaced) under the same path.
+    for (const std::string kind : {"algorithm", "problem"}) {
+        const std::string before = value_or(old_facts, kind + " module", "(built in)");
+        const std::string after = value_or(new_facts, kind + " module", "(built in)");
+        if (before == after)
+            continue;
+        const std::string name = kind + " '" + component_name(value_or(new_facts, kind)) + "'";
+        if (after == "(built in)")
+            return name + ": the stored runs were made by plugin " +
+                   value_or(old_notes, kind + " module file") + ", it is now built into mhbench";
+        if (before == "(built in)")
+            return name + ": the stored runs were made by mhbench's built-in " + kind +
+                   ", it now comes from plugin " + value_or(new_notes, kind + " module file");
+        return name + ": the plugin " + value_or(new_notes, kind + " module file") +
+               " changed since the study started (sha256 " + short_hash(before) + " -> " + short_hash(after) +
+               ")";
     }
     if (value_or(old_facts, "problem") != value_or(new_facts, "problem")) {
         // A data file's content (its path is the same: the slot matched).

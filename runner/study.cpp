@@ -144,6 +144,7 @@ void prepare_algorithms(const Study& study, const AlgorithmRegistry& registry, P
                 prepared.optimizers.push_back(registry.create(spec));
                 prepared.algorithm_specs.push_back(canonical);
                 prepared.algorithm_versions.push_back(entry.version);
+                prepared.algorithm_modules.push_back({entry.module_path, entry.module_sha256});
                 prepared.algorithms.push_back({canonical, label, registry.full(spec).canonical()});
                 prepared.study.algorithms.push_back(with_label(canonical, label));
             } catch (const std::exception& e) {
@@ -235,6 +236,8 @@ void prepare_problems(const Study& study, const ProblemRegistry& registry, Prepa
                     prepared.problems.push_back(registry.create(one));
                     prepared.problem_specs.push_back(canonical);
                     prepared.problem_versions.push_back(registry.find(one.name).version);
+                    prepared.problem_modules.push_back(
+                        {registry.find(one.name).module_path, registry.find(one.name).module_sha256});
                     prepared.problem_identities.push_back(
                         content_identity(Spec::parse(canonical), prepared.problems.back()->data_files()));
                 } catch (const std::exception& e) {

@@ -75,6 +75,9 @@ struct Study {
     // an evaluation count, and the report adds the competition's tables and result files. (Its
     // initializer spares aggregate initialisations that end before it a -Wmissing-field-initializers.)
     std::string protocol{};
+    // Plug-in modules (runner/plugin_loader.hpp) whose components the study names, as absolute
+    // paths; study.ini keeps them so that `--study-file DIR/study.ini` loads them again.
+    std::vector<std::string> plugins{};
 };
 
 inline constexpr std::int64_t max_runs_per_pair = 1000000;
@@ -102,6 +105,10 @@ struct PreparedStudy {
     // The implementation version (Registry Entry::version) of each optimiser and each problem.
     std::vector<int> algorithm_versions;
     std::vector<int> problem_versions;
+    // The plug-in module that provides each optimiser and each problem (path and SHA-256), both
+    // empty for a built-in one: the module's hash joins the identity of every run it made.
+    std::vector<DataFile> algorithm_modules;
+    std::vector<DataFile> problem_modules;
     std::vector<std::unique_ptr<Optimizer>> optimizers;
     std::vector<std::unique_ptr<Problem>> problems;
     // Union of the problems' parameter names, in order of first appearance (runs.csv columns).

@@ -75,6 +75,8 @@ std::string study_ini(const Study& study) {
         text += "budget = " + budget_text(b) + '\n';
     if (!study.protocol.empty()) // only then: the study.ini of every other study is as it was
         text += "protocol = " + study.protocol + '\n';
+    for (const auto& plugin : study.plugins) // likewise
+        text += "plugins = " + plugin + '\n';
     return text;
 }
 

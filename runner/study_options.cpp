@@ -1,8 +1,10 @@
 #include "runner/study_options.hpp"
 
+#include <algorithm>
 #include <boost/program_options/value_semantic.hpp>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "problems/core/parameters.hpp"
@@ -49,7 +51,12 @@ po::options_description study_options() {
         ("protocol", po::value<std::string>(),
          "follow a CEC competition protocol: cec2017 or cec2022 (none: no protocol). The report adds the "
          "competition's tables per dimension and the organisers' result files (report/cec/); the problems "
-         "must be of that suite and the budget give evaluations. The presets cec2017 and cec2022 set it");
+         "must be of that suite and the budget give evaluations. The presets cec2017 and cec2022 set it")
+        ("plugins", po::value<specs>()->multitoken()->composing(),
+         "plug-in modules (shared libraries built with mhbench_add_plugin) whose optimisers and problems the "
+         "study names; the option may be repeated. Their names must differ from every other; each module's "
+         "SHA-256 joins the identity of its runs, so a rebuilt plug-in is noticed on resume")
+        ("plugin", po::value<specs>()->multitoken()->composing(), "same as --plugins");
     // clang-format on
     return d;
 }
@@ -61,7 +68,7 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
         errors.push_back(prefix + key + " = " + value_excerpt(value) + " " + why);
     };
     const bool is_list = key == "algorithms" || key == "algorithm" || key == "problems" || key == "problem" ||
-                         key == "budget" || key == "budgets";
+                         key == "budget" || key == "budgets" || key == "plugins" || key == "plugin";
     if (!is_list && !seen_.insert(key).second) {
         errors.push_back(prefix + "'" + key + "' is given twice");
         return;
@@ -87,6 +94,15 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
         for (auto& spec : split_spec_list(value)) {
             list.push_back(std::move(spec));
             origins.push_back(where);
+        }
+    } else if (key == "plugins" || key == "plugin") {
+        // Every source adds to the list (a study file's plug-ins and the command line's), each as
+        // an absolute path so that study.ini finds it from anywhere; loading is the CLI's (the
+        // registries must know the plug-ins' names before the specs are checked).
+        for (const auto& path : split_spec_list(value)) {
+            const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
+            if (std::find(study_.plugins.begin(), study_.plugins.end(), absolute) == study_.plugins.end())
+                study_.plugins.push_back(absolute);
         }
     } else if (key == "runs") {
         if (const auto v = read_integer(max_runs_per_pair))

@@ -15,7 +15,7 @@
 namespace mhb {
 
 // algorithms/algorithm, problems/problem, runs, seed, seeds, iterations, evaluations, target,
-// budget/budgets, protocol, with their help texts.
+// budget/budgets, protocol, plugins/plugin, with their help texts.
 boost::program_options::options_description study_options();
 
 // Applies the study options of one source — the command line, or one study file — on top of a

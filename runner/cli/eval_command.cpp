@@ -13,6 +13,7 @@
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
+#include "runner/components.hpp"
 #include "runner/points_reader.hpp"
 
 namespace mhb::cli {
@@ -28,12 +29,16 @@ int run_eval_command(const std::vector<std::string>& args) {
         "file of points, one a line, coordinates separated by spaces or commas ('-' reads standard input); "
         "blank lines and lines starting with # are skipped. Points are evaluated as given, outside the box "
         "too "
-        "(no bound repair)");
+        "(no bound repair)")(
+        "plugin", po::value<std::vector<std::string>>()->composing(),
+        "load this plug-in module first, so that --problem may name its problems (repeatable)");
     po::variables_map vm;
     if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
         return exit_ok;
 
-    const auto problem = builtin_problems().create(vm["problem"].as<std::string>());
+    const Components components = compose_components(
+        vm.count("plugin") != 0 ? vm["plugin"].as<std::vector<std::string>>() : std::vector<std::string>{});
+    const auto problem = components.problems.create(vm["problem"].as<std::string>());
     const std::string file = vm["points"].as<std::string>();
     std::vector<PointLine> points;
     if (file == "-") {

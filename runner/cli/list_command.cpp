@@ -12,6 +12,7 @@
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
+#include "runner/components.hpp"
 #include "runner/study_presets.hpp"
 
 namespace mhb::cli {
@@ -27,6 +28,8 @@ void print_registry(std::ostream& out, const char* title, const Registry<Product
             << "  " << entry.name << " (version " << entry.version << ")\n      " << entry.summary << '\n';
         if (!entry.reference.empty())
             out << "      reference: " << entry.reference << '\n';
+        if (!entry.module_path.empty())
+            out << "      plugin: " << entry.module_path << '\n';
         if (entry.parameters.empty()) {
             out << "      no parameters\n";
             continue;
@@ -87,12 +90,14 @@ void print_studies(std::ostream& out) {
 int run_list_command(const std::vector<std::string>& args) {
     po::options_description options("Options");
     options.add_options()("help,h", "this text")("what", po::value<std::string>(),
-                                                 "algorithms, problems or studies (default: all three)");
+                                                 "algorithms, problems or studies (default: all three)")(
+        "plugin", po::value<std::vector<std::string>>()->composing(),
+        "also list the optimisers and problems of this plug-in module (repeatable)");
     po::positional_options_description positional;
     positional.add("what", 1);
     po::variables_map vm;
     const auto print_help = [&] {
-        std::cout << "Usage: mhbench list [algorithms|problems|studies]\n\n"
+        std::cout << "Usage: mhbench list [algorithms|problems|studies] [--plugin lib.so ...]\n\n"
                      "Lists what a study can name: every registered optimiser and problem family with its\n"
                      "summary, reference and parameters (default, allowed values, meaning), and the study\n"
                      "presets of mhbench run --study.\n\n"
@@ -106,10 +111,13 @@ int run_list_command(const std::vector<std::string>& args) {
         std::cerr << "mhbench list: unknown list '" << what << "'; known: algorithms, problems, studies\n";
         return exit_usage;
     }
+    // A module that cannot be used: one line from main (PluginError), exit 1.
+    const Components components = compose_components(
+        vm.count("plugin") != 0 ? vm["plugin"].as<std::vector<std::string>>() : std::vector<std::string>{});
     if (all || what == "algorithms")
-        print_registry(std::cout, "Algorithms", builtin_algorithms());
+        print_registry(std::cout, "Algorithms", components.algorithms);
     if (all || what == "problems")
-        print_registry(std::cout, "Problems", builtin_problems());
+        print_registry(std::cout, "Problems", components.problems);
     if (all || what == "studies")
         print_studies(std::cout);
     return exit_ok;

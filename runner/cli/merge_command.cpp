@@ -15,6 +15,7 @@
 #include "results/store.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
+#include "runner/components.hpp"
 #include "runner/context.hpp"
 #include "runner/data_provenance.hpp"
 #include "runner/parallel_runner.hpp"
@@ -151,7 +152,10 @@ int run_merge_command(const std::vector<std::string>& args) {
     }
 
     // The study itself, to check that each shard holds exactly the runs its index is given.
-    const PreparedStudy prepared = prepare_study(parse_study_ini(first.data.study_text, "study.ini"));
+    // Its plug-ins are loaded from the paths study.ini records (a PluginError is one line, exit 1).
+    const Study study = parse_study_ini(first.data.study_text, "study.ini");
+    const Components components = compose_components(study.plugins);
+    const PreparedStudy prepared = prepare_study(study, components.algorithms, components.problems);
     const auto expected = shard_run_ids(prepared, first.spec.count);
     for (const auto& [index, shard] : by_index) {
         std::vector<std::int64_t> ids;

@@ -23,6 +23,7 @@
 #include "results/store.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
+#include "runner/components.hpp"
 #include "runner/context.hpp"
 #include "runner/distributed.hpp"
 #include "runner/dry_run.hpp"
@@ -272,8 +273,17 @@ int run_run_command(const std::vector<std::string>& args) {
     std::optional<PreparedStudy> prepared;
     // A preset or study file that could not be read would only add "no algorithm given" noise.
     if (base_read) {
+        // The plug-ins first: the specs may name their components. A module that cannot be used
+        // is failed work (exit 1) in one line, like an unreadable data file, and ends here.
+        std::optional<Components> components;
         try {
-            prepared = prepare_study(study);
+            components.emplace(compose_components(study.plugins));
+        } catch (const PluginError& e) {
+            std::cerr << "mhbench run: " << e.what() << '\n';
+            return exit_failure;
+        }
+        try {
+            prepared = prepare_study(study, components->algorithms, components->problems);
         } catch (const std::invalid_argument& e) {
             // A malformed budget was reported already; "give a budget" would repeat it.
             const bool budget_reported =

@@ -1,13 +1,17 @@
 // Example: extending mhbench with your own problem and your own optimiser, then running them in a
-// study beside the built-in ones. This is the whole of what a user writes; it is built and run as a
-// test so that it keeps working.
-#include <cmath>
+// study beside the built-in ones. The problem, the optimiser and their registration (steps 1 to 3)
+// are in tests/plugin_example/booth_components.hpp, shared with the plug-in module built from the
+// same code (tests/plugin_example/); this file and that header are the whole of what a user
+// writes. It is built and run as a test so that it keeps working, and so is the plug-in: built
+// outside the tree against the installed package, run by `mhbench run --plugin`, it must give the
+// records of the same code compiled in, byte for byte.
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include "algorithms/algorithm_registry.hpp"
-#include "algorithms/sampling.hpp"
+#include "cli_harness.hpp"
+#include "plugin_example/booth_components.hpp"
 #include "problems/problem_registry.hpp"
 #include "results/store.hpp"
 #include "runner/parallel_runner.hpp"
@@ -16,86 +20,44 @@
 
 namespace {
 
-// 1. A problem: the Booth function, f(x, y) = (x + 2y - 7)^2 + (2x + y - 5)^2 on [-10, 10]^2,
-//    minimum 0 at (1, 3). evaluate() is const and keeps no state.
-class Booth final : public mhb::Problem {
-public:
-    std::string name() const override { return "booth"; }
-    Eigen::Index dimension() const override { return 2; }
-    const mhb::Box& bounds() const override { return box_; }
-    double evaluate(const Eigen::VectorXd& x) const override {
-        return std::pow(x[0] + 2 * x[1] - 7, 2) + std::pow(2 * x[0] + x[1] - 5, 2);
+// 3. Registration: the built-in components plus one entry each.
+struct ExampleComponents {
+    mhb::AlgorithmRegistry algorithms{"algorithm"};
+    mhb::ProblemRegistry problems{"problem"};
+    ExampleComponents() {
+        mhb::register_builtin_algorithms(algorithms);
+        mhb::register_builtin_problems(problems);
+        booth_example::register_components(algorithms, problems);
     }
-    std::optional<mhb::KnownOptimum> known_optimum() const override {
-        return mhb::KnownOptimum{0.0, Eigen::Vector2d(1.0, 3.0)};
-    }
-
-private:
-    mhb::Box box_{Eigen::Vector2d(-10, -10), Eigen::Vector2d(10, 10)};
 };
 
-// 2. An optimiser: a (1+1) evolution strategy with a fixed step, as simple as they come. It holds
-//    only its parameter; the objective and the random stream are passed in.
-class OnePlusOne final : public mhb::Optimizer {
-public:
-    explicit OnePlusOne(double step) : step_(step) {}
-    std::string name() const override { return "one-plus-one"; }
-    void run(mhb::Objective& objective, mhb::Rng& rng) const override {
-        Eigen::VectorXd parent = mhb::uniform_point(objective.bounds(), rng);
-        double f_parent = objective.evaluate(parent);
-        objective.initialised();
-        Eigen::VectorXd child(parent.size());
-        while (!objective.exhausted()) {
-            for (Eigen::Index k = 0; k < child.size(); ++k)
-                child[k] = parent[k] + step_ * rng.normal();
-            const double f = objective.evaluate(child); // counted; repaired into the box
-            if (f < f_parent) {
-                parent = child;
-                f_parent = f;
-            }
-            objective.end_iteration();
-        }
-    }
-
-private:
-    double step_;
-};
-
-TEST(ExtensionExample, OwnProblemAndOptimiserRunInAStudyBesideBuiltInOnes) {
-    // 3. Registration: the built-in components plus one entry each.
-    mhb::AlgorithmRegistry algorithms("algorithm");
-    mhb::register_builtin_algorithms(algorithms);
-    algorithms.add(
-        {"one-plus-one",
-         1,
-         "(1+1)-ES with a fixed Gaussian step",
-         "Rechenberg (1973)",
-         {mhb::ParameterInfo::real("step", 0.1, 0.0, 1e6, "standard deviation of the step").open_below()},
-         [](const mhb::ParameterValues& p) -> std::unique_ptr<mhb::Optimizer> {
-             return std::make_unique<OnePlusOne>(p.real("step"));
-         }});
-    mhb::ProblemRegistry problems("problem");
-    mhb::register_builtin_problems(problems);
-    problems.add({"booth",
-                  1,
-                  "Booth's function, f* = 0 at (1, 3)",
-                  "Jamil, Yang (2013), test function 12",
-                  {},
-                  [](const mhb::ParameterValues&) -> std::unique_ptr<mhb::Problem> {
-                      return std::make_unique<Booth>();
-                  }});
-
-    // 4. A study, as `mhbench run` would make it.
+// 4. A study, as `mhbench run` would make it, written into `dir`.
+mhb::Study example_study() {
     mhb::Study study;
     study.algorithms = {"one-plus-one:step=0.5", "tlbo:np=10"};
     study.problems = {"booth", "sphere:dim=2"};
     study.runs = 3;
     study.budgets.front().max_evaluations = 2000;
-    const mhb::PreparedStudy prepared = mhb::prepare_study(study, algorithms, problems);
-    const auto dir = std::filesystem::temp_directory_path() / ("mhb_extension_" + std::to_string(::getpid()));
+    return study;
+}
+
+// The same study as `mhbench run` options (the plug-in test below).
+const char* const example_options =
+    "--algorithms 'one-plus-one:step=0.5 tlbo:np=10' --problems 'booth sphere:dim=2' "
+    "--runs 3 --evaluations 2000 --no-report --quiet";
+
+void run_example_study(const ExampleComponents& components, const std::filesystem::path& dir) {
+    const mhb::PreparedStudy prepared =
+        mhb::prepare_study(example_study(), components.algorithms, components.problems);
     std::filesystem::remove_all(dir);
     mhb::StudyWriter writer(dir, mhb::study_ini(prepared.study), "", prepared.parameter_columns, false);
-    ASSERT_EQ(mhb::run_study(prepared, writer).kept, 12);
+    EXPECT_EQ(mhb::run_study(prepared, writer).kept, 12);
+}
+
+TEST(ExtensionExample, OwnProblemAndOptimiserRunInAStudyBesideBuiltInOnes) {
+    const ExampleComponents components;
+    const auto dir = std::filesystem::temp_directory_path() / ("mhb_extension_" + std::to_string(::getpid()));
+    run_example_study(components, dir);
 
     for (const auto& r : mhb::load_study(dir).runs) {
         EXPECT_TRUE(r.ok) << r.message;
@@ -104,13 +66,67 @@ TEST(ExtensionExample, OwnProblemAndOptimiserRunInAStudyBesideBuiltInOnes) {
         EXPECT_LT(*r.error(), r.algorithm.rfind("tlbo", 0) == 0 ? 1e-10 : 1e-2)
             << r.algorithm << " on " << r.problem;
     }
-    EXPECT_THROW(
-        (void)mhb::prepare_study(
-            mhb::Study{
-                {"one-plus-one:step=0"}, {"booth"}, {}, {}, 1, 1, mhb::SeedMode::common, study.budgets},
-            algorithms, problems),
-        std::invalid_argument);
+    mhb::Study zero_step = example_study(); // a step of 0 is refused by the declared range
+    zero_step.algorithms = {"one-plus-one:step=0"};
+    EXPECT_THROW((void)mhb::prepare_study(zero_step, components.algorithms, components.problems),
+                 std::invalid_argument);
     std::filesystem::remove_all(dir);
+}
+
+using mhb::test_support::read_text;
+using mhb::testing_cli::run_mhbench;
+using mhb::testing_cli::run_shell;
+using mhb::testing_cli::scratch_directory;
+
+std::string shell_quoted(const std::filesystem::path& path) {
+    std::string out = "'"; // appended, not `"'" + ...`: GCC 12 warns (-Wrestrict) on that falsely
+    out += path.string();
+    return out += '\'';
+}
+
+TEST(PluginPackage, ExampleBuiltAgainstTheInstalledPackageGivesTheRecordsOfTheInTreeExample) {
+    const auto scratch = scratch_directory() / "package";
+    std::filesystem::remove_all(scratch);
+    const auto prefix = scratch / "prefix";
+    const auto build = scratch / "build";
+    const std::string cmake = shell_quoted(MHB_CMAKE_COMMAND);
+    auto r =
+        run_shell(cmake + " --install " + shell_quoted(MHB_BINARY_DIR) + " --prefix " + shell_quoted(prefix));
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    // The contract's headers and what they include, nothing more (cmake/MhbInstall.cmake).
+    std::size_t headers = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(prefix / "include" / "mhbench"))
+        headers += entry.is_regular_file() ? 1U : 0U;
+    EXPECT_EQ(headers, 13U);
+    EXPECT_TRUE(
+        std::filesystem::exists(prefix / "lib" / "cmake" / "mhbench" / "mhbenchConfigVersion.cmake") ||
+        std::filesystem::exists(prefix / "lib64" / "cmake" / "mhbench" / "mhbenchConfigVersion.cmake"));
+    // Configured and built outside the source tree, by find_package(mhbench 0.1) alone.
+    const auto source = scratch / "booth";
+    std::filesystem::create_directories(source);
+    for (const char* file : {"CMakeLists.txt", "booth_plugin.cpp", "booth_components.hpp"})
+        std::filesystem::copy_file(std::filesystem::path(MHB_SOURCE_DIR) / "tests" / "plugin_example" / file,
+                                   source / file);
+    r = run_shell(cmake + " -S " + shell_quoted(source) + " -B " + shell_quoted(build) + " -G " +
+                  shell_quoted(MHB_CMAKE_GENERATOR) + " -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=" +
+                  shell_quoted(MHB_CXX_COMPILER) + " -DCMAKE_PREFIX_PATH=" + shell_quoted(prefix));
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    r = run_shell(cmake + " --build " + shell_quoted(build));
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+
+    const auto plugged = scratch / "plugged";
+    r = run_mhbench("run --plugin " + shell_quoted(build / "booth_plugin.so") + " " + example_options +
+                    " --out " + shell_quoted(plugged));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto built_in = scratch / "built-in";
+    run_example_study(ExampleComponents(), built_in);
+    // Byte for byte: the same seeds, evaluations, best f and x, and the same convergence.
+    for (const char* file : {"runs.csv", "curves.csv", "improvements.csv"}) {
+        const std::string expected = read_text(built_in / file);
+        EXPECT_FALSE(expected.empty()) << file;
+        EXPECT_EQ(read_text(plugged / file), expected) << file;
+    }
+    std::filesystem::remove_all(scratch);
 }
 
 } // namespace

@@ -1,7 +1,8 @@
 // Implementation versions in run identities: version 1 leaves a run's identity as it was before
 // versions existed (stored studies keep working), a bump changes it, and extending a study whose
 // stored runs came from another version is refused naming the component and both versions,
-// unless the runs are to be computed again.
+// unless the runs are to be computed again. Likewise a plug-in module's SHA-256 (runner/
+// plugin_loader.hpp): it joins the identity of its components' runs, built-in ones keep theirs.
 #include <gtest/gtest.h>
 #include <stdexcept>
 #include <string>
@@ -27,16 +28,32 @@ Study small_study() {
     return study;
 }
 
-// The built-in registry of `Product`s with entry `name` at `version`.
-template <class Product>
-Registry<Product> with_version(const Registry<Product>& builtin, const std::string& name, int version) {
+// The built-in registry of `Product`s with entry `name` changed by `change`.
+template <class Product, class Change>
+Registry<Product> with_entry(const Registry<Product>& builtin, const std::string& name, Change change) {
     Registry<Product> registry(builtin.kind());
     for (auto entry : builtin.entries()) {
         if (entry.name == name)
-            entry.version = version;
+            change(entry);
         registry.add(entry);
     }
     return registry;
+}
+
+// The built-in registry of `Product`s with entry `name` at `version`.
+template <class Product>
+Registry<Product> with_version(const Registry<Product>& builtin, const std::string& name, int version) {
+    return with_entry(builtin, name, [version](auto& entry) { entry.version = version; });
+}
+
+// The built-in registry with entry `name` as if a plug-in module of hash `sha256` registered it.
+template <class Product>
+Registry<Product> from_module(const Registry<Product>& builtin, const std::string& name,
+                              const std::string& sha256) {
+    return with_entry(builtin, name, [&sha256](auto& entry) {
+        entry.module_path = "/plugins/mine.so";
+        entry.module_sha256 = sha256;
+    });
 }
 
 // Writes every run of `study` into a study directory at `dir`.
@@ -109,6 +126,32 @@ TEST(RunIdentityVersions, ExtendingRunsOfAnotherVersionIsRefusedUnlessRecomputed
     keys.recompute_changed = true;
     const StudyWriter writer(dir, "study", "", v2.parameter_columns, false, v2.algorithms, keys);
     EXPECT_TRUE(writer.completed().empty()); // every run of version 1 is computed again
+}
+
+TEST(RunIdentityVersions, APluginModulesHashJoinsTheIdentityWhileBuiltInsKeepTheirs) {
+    const Study study = small_study();
+    const RunKey built_in = run_key(prepare_study(study), 0);
+    EXPECT_EQ(built_in.facts.find("module"), std::string::npos) << built_in.facts;
+    const std::string one(64, 'a');
+    const std::string two(64, 'b');
+    const RunKey first = run_key(prepare_study(study, from_module(builtin_algorithms(), "pso", one)), 0);
+    const RunKey again = run_key(prepare_study(study, from_module(builtin_algorithms(), "pso", one)), 0);
+    const RunKey rebuilt = run_key(prepare_study(study, from_module(builtin_algorithms(), "pso", two)), 0);
+    EXPECT_NE(first.identity, built_in.identity);
+    EXPECT_EQ(first.identity, again.identity);
+    EXPECT_NE(first.identity, rebuilt.identity);
+    EXPECT_EQ(first.slot, rebuilt.slot);
+    EXPECT_EQ(
+        describe_run_change(first, rebuilt),
+        "algorithm 'pso': the plugin /plugins/mine.so changed since the study started (sha256 aaaaaaaa.. -> "
+        "bbbbbbbb..)");
+    EXPECT_EQ(describe_run_change(built_in, first),
+              "algorithm 'pso': the stored runs were made by mhbench's built-in algorithm, it now comes from "
+              "plugin /plugins/mine.so");
+    const RunKey problem = run_key(
+        prepare_study(study, builtin_algorithms(), from_module(builtin_problems(), "sphere", one)), 0);
+    EXPECT_EQ(describe_run_change(problem, built_in), "problem 'sphere': the stored runs were made by plugin "
+                                                      "/plugins/mine.so, it is now built into mhbench");
 }
 
 } // namespace

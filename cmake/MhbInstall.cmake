@@ -1,0 +1,51 @@
+# The installed C++ package (`cmake --install`), for plug-in modules built outside this tree:
+#   include/mhbench/...            the plug-in contract's headers, and the headers they include
+#   lib/cmake/mhbench/             mhbenchConfig.cmake, its version file, the exported targets
+#                                  and mhbench_add_plugin() (mhbenchPlugin.cmake)
+#   bin/mhbench                    the executable the modules are loaded into
+# mhbench::mhbench is headers only: a plug-in's calls into mhbench (Objective::evaluate, Rng,
+# parameters) are resolved from the executable when it loads the module, so that the one copy of
+# each function the runs use is mhbench's own (runner/plugin_symbols.list says which).
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+# The closure of runner/plugin_api.hpp's includes, nothing more (tests/plugin_example checks it by
+# building against the installed copy).
+set(MHB_PUBLIC_HEADERS
+    algorithms/algorithm_registry.hpp
+    algorithms/optimizer.hpp
+    algorithms/sampling.hpp
+    problems/core/parameters.hpp
+    problems/core/registry.hpp
+    problems/core/rng.hpp
+    problems/core/spec.hpp
+    problems/core/text_excerpt.hpp
+    problems/objective.hpp
+    problems/problem.hpp
+    problems/problem_registry.hpp
+    problems/trace_recorder.hpp
+    runner/plugin_api.hpp)
+
+add_library(mhb_api INTERFACE)
+add_library(mhbench::mhbench ALIAS mhb_api)
+set_target_properties(mhb_api PROPERTIES EXPORT_NAME mhbench)
+target_include_directories(mhb_api INTERFACE $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/mhbench>)
+target_link_libraries(mhb_api INTERFACE Eigen3::Eigen)
+target_compile_features(mhb_api INTERFACE cxx_std_20)
+
+foreach(header IN LISTS MHB_PUBLIC_HEADERS)
+    get_filename_component(folder ${header} DIRECTORY)
+    install(FILES ${PROJECT_SOURCE_DIR}/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/mhbench/${folder})
+endforeach()
+# The executable as mhbench::cli, so that a plug-in's own tests can run it.
+set_target_properties(mhbench PROPERTIES EXPORT_NAME cli)
+install(TARGETS mhb_api mhbench EXPORT mhbenchTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+set(mhb_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/mhbench)
+install(EXPORT mhbenchTargets NAMESPACE mhbench:: DESTINATION ${mhb_cmake_dir})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/mhbenchConfig.cmake.in
+    ${PROJECT_BINARY_DIR}/mhbenchConfig.cmake INSTALL_DESTINATION ${mhb_cmake_dir})
+# 0.x: a minor version may change the contract, so find_package(mhbench 0.1) takes 0.1.* only.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/mhbenchConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/mhbenchConfig.cmake ${PROJECT_BINARY_DIR}/mhbenchConfigVersion.cmake
+    ${PROJECT_SOURCE_DIR}/cmake/mhbenchPlugin.cmake DESTINATION ${mhb_cmake_dir})
