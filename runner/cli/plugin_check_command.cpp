@@ -7,10 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/algorithm_registry.hpp"
-#include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
+#include "runner/components.hpp"
 #include "runner/plugin_check.hpp"
 
 namespace mhb::cli {
@@ -46,7 +45,8 @@ int run_plugin_check_command(const std::vector<std::string>& args) {
         "optimum hold together, its values are numbers (never NaN, never below f*), the same point gives "
         "the same value again and on other threads, what one evaluation costs; then random-search runs on "
         "it through the optimiser checks.\n\nUsage: mhbench plugin-check --algorithm SPEC [--problem SPEC]\n"
-        "       mhbench plugin-check --problem SPEC\n\nOptions");
+        "       mhbench plugin-check --problem SPEC\n"
+        "       mhbench plugin-check --plugin my_module.so --algorithm my-optimizer\n\nOptions");
     options.add_options()("help,h", "this text")("algorithm", po::value<std::string>(),
                                                  "the optimiser to check (mhbench list algorithms)")(
         "problem", po::value<std::string>(), "the problem to check, or to check the optimiser on")(
@@ -55,7 +55,10 @@ int run_plugin_check_command(const std::vector<std::string>& args) {
         "seed", po::value<std::string>()->default_value("1"),
         "the seed the runs' seeds derive from")("threads", po::value<std::string>()->default_value("2"),
                                                 "threads of the parallel side of the checks")(
-        "points", po::value<std::string>()->default_value("2000"), "random points a problem is evaluated at");
+        "points", po::value<std::string>()->default_value("2000"), "random points a problem is evaluated at")(
+        "plugin", po::value<std::vector<std::string>>()->composing(),
+        "load this plug-in module first, so that --algorithm and --problem may name its components "
+        "(repeatable)");
     po::variables_map vm;
     if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
         return exit_ok;
@@ -69,8 +72,10 @@ int run_plugin_check_command(const std::vector<std::string>& args) {
     check.threads = static_cast<int>(integer_argument(vm["threads"].as<std::string>(), "threads", 2, 1024));
     check.points = integer_argument(vm["points"].as<std::string>(), "points", 1, 100000000);
 
-    const AlgorithmRegistry& algorithms = builtin_algorithms();
-    const ProblemRegistry& problems = builtin_problems();
+    const Components components = compose_components(
+        vm.count("plugin") != 0 ? vm["plugin"].as<std::vector<std::string>>() : std::vector<std::string>{});
+    const AlgorithmRegistry& algorithms = components.algorithms;
+    const ProblemRegistry& problems = components.problems;
     const Spec problem_spec = problems.normalised(
         Spec::parse(vm.count("problem") != 0 ? vm["problem"].as<std::string>() : default_problem));
     const Spec algorithm_spec = algorithms.normalised(

@@ -85,6 +85,17 @@ TEST(PluginCli, ListAndEvalShowThePluginsComponents) {
     EXPECT_EQ(r.out, "0\n74\n");
 }
 
+TEST(PluginCli, PluginCheckPassesTheExamplesOptimizerAndProblem) {
+    const std::string plugin = test_plugins + "/test_plugin_booth.so";
+    const auto r = run_mhbench("plugin-check --plugin " + shell_quoted(plugin) +
+                               " --algorithm one-plus-one --problem booth --evaluations 500 --runs 2");
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    for (const char* line :
+         {"pass  optimum      f(x*) = f* = 0", "pass  budget       every run made exactly 500",
+          "pass  same seed", "pass  threads", "verdict: pass"})
+        EXPECT_NE(r.out.find(line), std::string::npos) << line << '\n' << r.out;
+}
+
 TEST(PluginCli, EachUnusableModuleIsRefusedInOneLine) {
     const std::string study = " --algorithms tlbo --problems sphere:dim=2 --evaluations 100 --quiet --out " +
                               shell_quoted(scratch_directory() / "refused");
