@@ -69,8 +69,8 @@ private:
     void drive(ChildLink& link, Objective& objective, std::uint64_t seed) const {
         const auto version = external::describe(link, "optimizer", parameters_, startup_timeout_).version;
         if (version != version_)
-            throw ChildFault("external: it announced version " + version + " when the study started and " +
-                                 version_ + " now",
+            throw ChildFault("it announced version " + version + " when the study started and " + version_ +
+                                 " now",
                              link.stderr_tail());
         link.send(start_message(objective, seed));
         for (;;) {
@@ -85,7 +85,7 @@ private:
                 message = external::parse_message(line);
                 type = external::message_type(message);
             } catch (const std::exception& e) {
-                throw ChildFault("external: " + link.program() + ": " + e.what(), link.stderr_tail());
+                throw ChildFault(link.program() + ": " + e.what(), link.stderr_tail());
             }
             if (type == "eval") {
                 evaluate(link, objective, message);
@@ -97,8 +97,7 @@ private:
                 link.finish(Seconds(1.0));
                 return;
             } else {
-                throw ChildFault("external: " + link.program() + ": unknown message type " +
-                                     quoted_excerpt(type),
+                throw ChildFault(link.program() + ": unknown message type " + quoted_excerpt(type),
                                  link.stderr_tail());
             }
         }
@@ -126,8 +125,7 @@ private:
             for (const auto& point : x)
                 points.push_back(external::read_vector(point, "a point", dimension));
         } catch (const std::exception& e) {
-            throw ChildFault("external: " + link.program() + ": bad eval message: " + e.what(),
-                             link.stderr_tail());
+            throw ChildFault(link.program() + ": bad eval message: " + e.what(), link.stderr_tail());
         }
         const auto room = static_cast<std::size_t>(std::min<std::int64_t>(
             objective.remaining_evaluations(), static_cast<std::int64_t>(points.size())));

@@ -83,11 +83,11 @@ std::string resolve_program(const std::string& program) {
 
 ChildLink::ChildLink(const std::vector<std::string>& argv) {
     if (argv.empty())
-        throw ChildFault("external: the command is empty", {});
+        throw ChildFault("the command is empty", {});
     program_ = argv.front();
     const std::string path = resolve_program(program_);
     if (path.empty())
-        throw ChildFault("external: " + program_ + ": not found in PATH", {});
+        throw ChildFault(program_ + ": not found in PATH", {});
     std::vector<std::string> words = argv;
     std::vector<char*> pointers;
     for (auto& w : words)
@@ -99,12 +99,12 @@ ChildLink::ChildLink(const std::vector<std::string>& argv) {
     int errors[2];
     int report[2];
     if (::pipe2(to_child, O_CLOEXEC) != 0)
-        throw ChildFault(std::string("external: cannot create a pipe (") + std::strerror(errno) + ")", {});
+        throw ChildFault(std::string("cannot create a pipe (") + std::strerror(errno) + ")", {});
     if (::pipe2(from_child, O_CLOEXEC) != 0 || ::pipe2(errors, O_CLOEXEC) != 0 ||
         ::pipe2(report, O_CLOEXEC) != 0) {
         // Rare enough (descriptors exhausted) that leaking a pipe pair until exit is not worth
         // the bookkeeping; the error is what matters.
-        throw ChildFault(std::string("external: cannot create a pipe (") + std::strerror(errno) + ")", {});
+        throw ChildFault(std::string("cannot create a pipe (") + std::strerror(errno) + ")", {});
     }
     const pid_t parent = ::getpid();
     pid_ = ::fork();
@@ -124,8 +124,7 @@ ChildLink::ChildLink(const std::vector<std::string>& argv) {
         close_fd(out_);
         close_fd(err_);
         reaped_ = true;
-        throw ChildFault(std::string("external: cannot start a process (") + std::strerror(fork_error) + ")",
-                         {});
+        throw ChildFault(std::string("cannot start a process (") + std::strerror(fork_error) + ")", {});
     }
     // Also here (not only in the child), so that a kill(-pid) right after fork finds the group.
     (void)::setpgid(pid_, pid_);
@@ -137,7 +136,7 @@ ChildLink::ChildLink(const std::vector<std::string>& argv) {
     ::close(report[0]);
     if (got == static_cast<ssize_t>(sizeof exec_error)) {
         kill();
-        throw ChildFault("external: " + path + " cannot be run (" + std::strerror(exec_error) + ")", {});
+        throw ChildFault(path + " cannot be run (" + std::strerror(exec_error) + ")", {});
     }
     // Writing to a child that has exited must be an error here, not a SIGPIPE that ends mhbench.
     ::fcntl(in_, F_SETFL, ::fcntl(in_, F_GETFL) | O_NONBLOCK);
@@ -186,7 +185,7 @@ void ChildLink::send(const std::string& line) {
     std::size_t done = 0;
     while (done < text.size()) {
         if (in_ < 0)
-            throw ChildFault("external: " + program_ + " " + exit_description(), stderr_tail());
+            throw ChildFault(program_ + " " + exit_description(), stderr_tail());
         const ssize_t wrote = ::write(in_, text.data() + done, text.size() - done);
         if (wrote > 0) {
             done += static_cast<std::size_t>(wrote);
@@ -202,7 +201,7 @@ void ChildLink::send(const std::string& line) {
                 drain_stderr(false);
             continue;
         }
-        throw ChildFault("external: " + program_ + " " + exit_description(), stderr_tail());
+        throw ChildFault(program_ + " " + exit_description(), stderr_tail());
     }
 }
 
@@ -218,21 +217,20 @@ std::string ChildLink::receive(std::chrono::duration<double> timeout) {
             return line;
         }
         if (out_buffer_.size() > max_line)
-            throw ChildFault("external: " + program_ + " wrote a line longer than 64 MiB", stderr_tail());
+            throw ChildFault(program_ + " wrote a line longer than 64 MiB", stderr_tail());
         if (out_ < 0)
-            throw ChildFault("external: " + program_ + " " + exit_description(), stderr_tail());
+            throw ChildFault(program_ + " " + exit_description(), stderr_tail());
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
             deadline - std::chrono::steady_clock::now());
         if (left.count() <= 0)
-            throw ChildFault("external: " + program_ + " did not answer within " +
+            throw ChildFault(program_ + " did not answer within " +
                                  std::to_string(std::chrono::duration<double>(timeout).count()) + " s",
                              stderr_tail());
         pollfd fds[2] = {{out_, POLLIN, 0}, {err_, POLLIN, 0}};
         const int ready =
             ::poll(fds, err_ >= 0 ? 2 : 1, static_cast<int>(std::min<long long>(left.count() + 1, 1000)));
         if (ready < 0 && errno != EINTR)
-            throw ChildFault(std::string("external: poll failed (") + std::strerror(errno) + ")",
-                             stderr_tail());
+            throw ChildFault(std::string("poll failed (") + std::strerror(errno) + ")", stderr_tail());
         if (ready <= 0)
             continue;
         if (err_ >= 0 && (fds[1].revents & (POLLIN | POLLHUP | POLLERR)) != 0)

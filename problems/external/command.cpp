@@ -8,7 +8,13 @@
 
 namespace mhb::external {
 
-std::vector<std::string> split_command(const std::string& text) {
+std::vector<std::string> split_command(const std::string& whole) {
+    // cmd='python3 model.py' quotes the whole command so that a spec list keeps it one spec
+    // (spec_grid.hpp): those outer quotes are not part of it.
+    std::string text = whole;
+    if (text.size() >= 2 && (text.front() == '\'' || text.front() == '"') && text.back() == text.front() &&
+        text.find(text.front(), 1) == text.size() - 1)
+        text = text.substr(1, text.size() - 2);
     std::vector<std::string> words;
     std::string word;
     bool in_word = false;
@@ -99,8 +105,9 @@ CommonOptions common_options(const ParameterValues& values) {
     if (!values.has("cmd"))
         throw std::invalid_argument("external: parameter 'cmd' is missing (external:cmd=program args...)");
     CommonOptions o;
-    o.command = values.text("cmd");
-    o.argv = split_command(o.command);
+    o.argv = split_command(values.text("cmd"));
+    for (const auto& word : o.argv)
+        o.command += (o.command.empty() ? "" : " ") + word;
     if (values.has("params"))
         o.parameters = split_params("external", values.text("params"));
     o.startup_timeout = std::chrono::duration<double>(values.real("startup_timeout"));

@@ -12,7 +12,8 @@
 
 namespace mhb::external {
 
-// `text` split at blanks; words may be quoted with '...' or "..." to hold blanks. Throws
+// `text` split at blanks; words may be quoted with '...' or "..." to hold blanks, and the whole
+// command may be quoted once more (`cmd='python3 model.py'`, one spec in a list). Throws
 // std::invalid_argument for an empty command or an unclosed quote.
 std::vector<std::string> split_command(const std::string& text);
 
@@ -34,7 +35,7 @@ std::string identity_facts(const std::vector<std::string>& words, const std::str
 // optimiser, and what they hold once validated (std::invalid_argument without cmd).
 std::vector<ParameterInfo> common_parameters();
 struct CommonOptions {
-    std::string command;
+    std::string command; // the words joined by blanks, for messages
     std::vector<std::string> argv;
     std::map<std::string, std::string> parameters;
     std::chrono::duration<double> startup_timeout{10.0};

@@ -116,7 +116,7 @@ private:
                 const auto again =
                     external::describe(*slot.link, "problem", options_.parameters, options_.startup_timeout);
                 if (again.version != description_.version || again.bounds.dimension() != dimension())
-                    throw ChildFault("external: a restarted worker describes another problem (version " +
+                    throw ChildFault("a restarted worker describes another problem (version " +
                                          again.version + ", dimension " +
                                          std::to_string(again.bounds.dimension()) + ")",
                                      slot.link->stderr_tail());
@@ -162,7 +162,7 @@ private:
                 f[i] = values[i];
             }
         } catch (const std::exception& e) {
-            throw ChildFault("external: " + link.program() + ": " + e.what(), link.stderr_tail());
+            throw ChildFault(link.program() + ": " + e.what(), link.stderr_tail());
         }
     }
 

@@ -70,7 +70,7 @@ Description describe(ChildLink& link, const std::string& role,
     } catch (const ChildFault&) {
         throw;
     } catch (const std::exception& e) {
-        throw ChildFault("external: " + link.program() + ": " + e.what(), link.stderr_tail());
+        throw ChildFault(link.program() + ": " + e.what(), link.stderr_tail());
     }
 }
 

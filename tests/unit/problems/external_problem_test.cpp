@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <thread>
 
+#include "problems/core/spec_grid.hpp"
+#include "problems/external/command.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem_registry.hpp"
 #include "support/external_clients.hpp"
@@ -33,6 +35,18 @@ Eigen::VectorXd point(double a, double b) {
 void expect_no_child_left(const std::string& marker) {
     EXPECT_TRUE(test_support::wait_until([&] { return processes_with(marker).empty(); }, 5.0)) << marker;
     EXPECT_TRUE(children_of_this_process().empty());
+}
+
+TEST(ExternalCommand, SplitsWordsKeepsQuotedBlanksAndOneSpecPerQuotedCommand) {
+    using V = std::vector<std::string>;
+    EXPECT_EQ(external::split_command("python3  model.py --fast"), (V{"python3", "model.py", "--fast"}));
+    EXPECT_EQ(external::split_command("'python3 my model.py'"), (V{"python3", "my", "model.py"}));
+    EXPECT_EQ(external::split_command("python3 'my model.py'"), (V{"python3", "my model.py"}));
+    EXPECT_THROW((void)external::split_command("python3 'model.py"), std::invalid_argument);
+    EXPECT_EQ(split_spec_list("external:cmd='python3 a.py',workers=2 pso"),
+              (V{"external:cmd='python3 a.py',workers=2", "pso"}));
+    EXPECT_EQ(external::split_params("external", "a=1;b=x=y"),
+              (std::map<std::string, std::string>{{"a", "1"}, {"b", "x=y"}}));
 }
 
 TEST(ExternalProblem, DescribesItselfAndEvaluatesExactly) {
