@@ -93,6 +93,7 @@ struct ProblemDescription {
 inline int serve_problem(const std::string& version,
                          const std::function<ProblemDescription(const Parameters&)>& describe,
                          const std::function<double(const Point&)>& evaluate) {
+    std::ios::sync_with_stdio(false); // std::cin read a character at a time otherwise
     for (nlohmann::json message = receive(); !message.is_null(); message = receive()) {
         const std::string type = message["type"];
         if (type == "describe") {
@@ -119,6 +120,7 @@ inline int serve_problem(const std::string& version,
 class OptimizerClient {
 public:
     explicit OptimizerClient(const std::string& version) {
+        std::ios::sync_with_stdio(false); // std::cin read a character at a time otherwise
         const nlohmann::json describe = receive();
         if (describe.is_null())
             std::exit(0);
