@@ -59,6 +59,28 @@ void close_fd(int& fd) {
     report_failure(report);
 }
 
+// The watcher's life (see ChildLink): it waits for the end of the lifeline, whose only write end
+// mhbench holds, and then kills the child's process group. The end comes when mhbench closes it
+// (the child is being ended anyway) or when mhbench dies, however it dies: SIGKILL included, which
+// PR_SET_PDEATHSIG covers for the child itself but not for what the child started. Forked without
+// exec from a process with threads: async-signal-safe calls only.
+[[noreturn]] void watch(int lifeline, pid_t group) {
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    sigemptyset(&ignore.sa_mask);
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE})
+        ::sigaction(signal, &ignore, nullptr); // a Ctrl-C at mhbench's terminal must not end it
+    // Nothing else of mhbench's stays open here: above all not the lifelines of other children.
+    if (lifeline > 0)
+        (void)::close_range(0, static_cast<unsigned>(lifeline) - 1, 0);
+    (void)::close_range(static_cast<unsigned>(lifeline) + 1, ~0U, 0);
+    char byte = 0;
+    while (::read(lifeline, &byte, 1) < 0 && errno == EINTR) {
+    }
+    ::kill(-group, SIGKILL);
+    ::_exit(0);
+}
+
 } // namespace
 
 // Resolved before fork: getenv is not async-signal-safe.
@@ -138,6 +160,17 @@ ChildLink::ChildLink(const std::vector<std::string>& argv) {
         kill();
         throw ChildFault(path + " cannot be run (" + std::strerror(exec_error) + ")", {});
     }
+    int life[2];
+    if (::pipe2(life, O_CLOEXEC) == 0) {
+        watcher_ = ::fork();
+        if (watcher_ == 0)
+            watch(life[0], pid_);
+        ::close(life[0]);
+        if (watcher_ > 0)
+            lifeline_ = life[1];
+        else
+            ::close(life[1]);
+    }
     // Writing to a child that has exited must be an error here, not a SIGPIPE that ends mhbench.
     ::fcntl(in_, F_SETFL, ::fcntl(in_, F_GETFL) | O_NONBLOCK);
 }
@@ -147,11 +180,17 @@ ChildLink::~ChildLink() {
 }
 
 void ChildLink::kill() {
-    if (pid_ > 0)
-        ::kill(-pid_, SIGKILL); // also after the reap: what it left running in its group
     if (!reaped_ && pid_ > 0) {
+        // Until the child is reaped its pid cannot be reused, so -pid_ is still its group.
+        ::kill(-pid_, SIGKILL);
         ::kill(pid_, SIGKILL);
-        while (::waitpid(pid_, &status_, 0) < 0 && errno == EINTR) {
+        close_fd(lifeline_);
+        if (watcher_ > 0)
+            while (::waitpid(watcher_, nullptr, 0) < 0 && errno == EINTR) {
+            }
+        watcher_ = -1;
+        int status = 0;
+        while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
         }
         reaped_ = true;
     }
@@ -163,19 +202,25 @@ void ChildLink::kill() {
     }
 }
 
+bool ChildLink::exited() {
+    if (exited_ || pid_ <= 0)
+        return exited_;
+    // WNOWAIT: seen, not reaped, so that its group stays its own until kill() (see there).
+    siginfo_t info{};
+    if (::waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT) == 0 &&
+        info.si_pid == pid_) {
+        exited_ = true;
+        exit_code_ = info.si_code;
+        exit_status_ = info.si_status;
+    }
+    return exited_;
+}
+
 void ChildLink::finish(std::chrono::duration<double> grace) {
     close_fd(in_);
     const auto deadline = std::chrono::steady_clock::now() + grace;
-    while (!reaped_) {
-        const pid_t got = ::waitpid(pid_, &status_, WNOHANG);
-        if (got == pid_) {
-            reaped_ = true;
-            break;
-        }
-        if (std::chrono::steady_clock::now() >= deadline)
-            break;
+    while (!reaped_ && !exited() && std::chrono::steady_clock::now() < deadline)
         ::usleep(1000);
-    }
     kill();
 }
 
@@ -297,23 +342,17 @@ std::string ChildLink::stderr_tail() {
 }
 
 std::string ChildLink::exit_description() {
-    if (!reaped_) {
-        // It closed its pipes: give it a moment to exit so that the status can be told.
-        for (int i = 0; i < 100 && !reaped_; ++i) {
-            if (::waitpid(pid_, &status_, WNOHANG) == pid_)
-                reaped_ = true;
-            else
-                ::usleep(1000);
-        }
-    }
-    if (!reaped_)
+    // It closed its pipes: give it a moment to exit so that the status can be told.
+    for (int i = 0; i < 100 && !exited(); ++i)
+        ::usleep(1000);
+    if (!exited_)
         return "closed its output";
     drain_stderr(true);
-    if (WIFEXITED(status_))
-        return "exited with status " + std::to_string(WEXITSTATUS(status_));
-    if (WIFSIGNALED(status_))
-        return std::string("was killed by signal ") + std::to_string(WTERMSIG(status_)) + " (" +
-               ::strsignal(WTERMSIG(status_)) + ")";
+    if (exit_code_ == CLD_EXITED)
+        return "exited with status " + std::to_string(exit_status_);
+    if (exit_code_ == CLD_KILLED || exit_code_ == CLD_DUMPED)
+        return std::string("was killed by signal ") + std::to_string(exit_status_) + " (" +
+               ::strsignal(exit_status_) + ")";
     return "ended";
 }
 

@@ -2,8 +2,9 @@
 // line by line over its stdin and stdout. It runs in a process group of its own, so that killing
 // it also kills what it started (a shell's children, a simulator's helpers), and with
 // PR_SET_PDEATHSIG, so that a mhbench killed by any signal (SIGKILL included) never leaves it
-// behind. Its stderr is kept (the last lines) for the error a fault turns into. Every read has a
-// deadline: a hung child is a fault, never a hang of mhbench.
+// behind. A watcher process (forked without exec) kills the group when mhbench dies, so that what
+// the child started does not outlive it either. Its stderr is kept (the last lines) for the error a fault
+// turns into. Every read has a deadline: a hung child is a fault, never a hang of mhbench.
 #pragma once
 
 #include <chrono>
@@ -60,6 +61,7 @@ private:
     void drain_stderr(bool wait_for_end);
     void add_stderr(const char* data, std::size_t size);
     [[nodiscard]] std::string exit_description();
+    [[nodiscard]] bool exited();
 
     std::string program_;
     pid_t pid_ = -1;
@@ -67,7 +69,11 @@ private:
     int out_ = -1; // its stdout, our end
     int err_ = -1; // its stderr, our end
     bool reaped_ = false;
-    int status_ = 0;
+    bool exited_ = false; // seen to exit (not reaped yet: see kill())
+    int exit_code_ = 0;   // CLD_EXITED, CLD_KILLED, ...
+    int exit_status_ = 0; // its exit status or signal
+    pid_t watcher_ = -1;  // the process that kills the group if mhbench dies
+    int lifeline_ = -1;   // the watcher waits for this pipe's end
     std::string out_buffer_;
     std::string err_partial_;
     std::deque<std::string> err_lines_;

@@ -2,10 +2,12 @@
 // Python problem, byte-identical with 1 and 2 threads; a problem whose program crashes fails its
 // own runs with one line each while the study's other runs finish; a changed script is refused
 // on extension like a changed data file.
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
+#include <thread>
 
 #include "cli_harness.hpp"
 #include "support/external_clients.hpp"
@@ -93,6 +95,40 @@ TEST(ExternalStudy, AChangedScriptIsRefusedOnExtension) {
     const auto b = run_mhbench("run " + study);
     EXPECT_NE(b.exit_code, 0);
     EXPECT_NE(b.err.find("the external program changed"), std::string::npos) << b.err;
+}
+
+// mhbench killed (SIGKILL: no handler runs) or stopped (SIGTERM twice) while an external problem
+// hangs with a grandchild of its own: neither the program nor what it started outlives mhbench.
+TEST(ExternalStudy, NoProgramOutlivesMhbenchKilledOrStopped) {
+    for (const char* signal : {"KILL", "TERM"}) {
+        const std::string marker = std::string("outlive-marker-") + signal;
+        const fs::path dir = fresh(std::string("external_kill_") + signal);
+        const fs::path pid_file = scratch_directory() / (marker + ".pid");
+        std::string command = "'";
+        command += MHB_CLI_PATH;
+        command += "' run --algorithms random-search --problem ";
+        command += spec("external", python(faulty, "hang 1 " + marker), "timeout=100");
+        command += " --runs 1 --evaluations 100 --no-report --out " + dir.string();
+        command += " >/dev/null 2>&1 & echo $! > '" + pid_file.string() + "'";
+        ASSERT_EQ(std::system(command.c_str()), 0);
+        // The program, its grandchild, the watcher and mhbench itself carry the marker.
+        ASSERT_TRUE(mhb::test_support::wait_until(
+            [&] {
+                return mhb::test_support::processes_with({"time.sleep(1000)", marker}).size() == 1;
+            },
+            20.0));
+        const std::string pid = mhb::testing_cli::read_text(pid_file);
+        // A first SIGTERM lets the runs under way finish (bounded by timeout=); the second ends
+        // mhbench at once (its handler is reset), like a second Ctrl-C.
+        ASSERT_EQ(std::system(("kill -" + std::string(signal) + " " + pid).c_str()), 0);
+        if (std::string(signal) == "TERM") {
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+            ASSERT_EQ(std::system(("kill -TERM " + pid).c_str()), 0);
+        }
+        EXPECT_TRUE(mhb::test_support::wait_until(
+            [&] { return mhb::test_support::processes_with(marker).empty(); }, 10.0))
+            << signal << ": " << mhb::test_support::processes_with(marker).size() << " left";
+    }
 }
 
 } // namespace
