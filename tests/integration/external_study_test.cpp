@@ -41,10 +41,12 @@ const std::string sphere = std::string(MHB_SOURCE_DIR) + "/scripts/external/sphe
 const std::string faulty = std::string(MHB_TEST_DATA_DIR) + "/external/faulty_problem.py";
 
 TEST(ExternalStudy, PythonOptimiserAndProblemGiveTheSameRecordsOnOneAndTwoThreads) {
-    const std::string study = "--algorithm " + spec("external", python(es), "params=lambda=5") +
-                              " --algorithms random-search --problem " +
-                              spec("external", python(sphere), "params=dim=4,workers=2") +
-                              " --runs 3 --evaluations 300 --seed 5 --no-report";
+    // The reference clients ignore further arguments: a marker that only this test's processes carry.
+    const std::string study =
+        "--algorithm " + spec("external", python(es, "study-es-marker"), "params=lambda=5") +
+        " --algorithms random-search --problem " +
+        spec("external", python(sphere, "study-sphere-marker"), "params=dim=4,workers=2") +
+        " --runs 3 --evaluations 300 --seed 5 --no-report";
     const fs::path one = fresh("external1");
     const fs::path two = fresh("external2");
     const auto a = run_mhbench("run " + study + " --threads 1 --out " + one.string());
@@ -60,8 +62,8 @@ TEST(ExternalStudy, PythonOptimiserAndProblemGiveTheSameRecordsOnOneAndTwoThread
     const auto c = run_mhbench("run --study-file " + (one / "study.ini").string() +
                                " --threads 2 --no-report --out " + one.string());
     EXPECT_EQ(c.exit_code, 0) << c.err;
-    EXPECT_TRUE(mhb::test_support::processes_with(sphere).empty());
-    EXPECT_TRUE(mhb::test_support::processes_with(es).empty());
+    EXPECT_TRUE(mhb::test_support::processes_with("study-sphere-marker").empty());
+    EXPECT_TRUE(mhb::test_support::processes_with("study-es-marker").empty());
 }
 
 TEST(ExternalStudy, ACrashingProblemFailsItsOwnRunsAndTheOthersFinish) {
