@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <thread>
 
+#include "algorithms/algorithm_registry.hpp"
+#include "algorithms/sampling.hpp"
 #include "problems/core/spec_grid.hpp"
 #include "problems/external/command.hpp"
 #include "problems/objective.hpp"
@@ -95,6 +97,40 @@ TEST(ExternalProblem, TheOctaveClientServesAProblem) {
     std::vector<double> f(2);
     problem->evaluate_many(points, f);
     EXPECT_NEAR(f[1], x.squaredNorm(), 1e-15);
+}
+
+// The worked example: the PMSM steady-state model written in Python gives the built-in
+// model's numbers to 1e-12, and ITLBO identifies the motor through it as through the built-in.
+TEST(ExternalProblem, ThePythonPmsmModelEqualsTheBuiltInAndItlboIdentifiesThroughIt) {
+    const std::string data = std::string(MHB_TEST_DATA_DIR) + "/pmsm/pmsm_public_2200rpm_2.5Nm_clean_ss.csv";
+    const auto python = external(reference_client("pmsm_steady_problem.py"), "params=data=" + data);
+    const auto builtin = builtin_problems().create("pmsm:data=" + data + ",fitness=direct");
+    ASSERT_EQ(python->dimension(), 4);
+    EXPECT_EQ(python->bounds().lower, builtin->bounds().lower);
+    EXPECT_EQ(python->bounds().upper, builtin->bounds().upper);
+    EXPECT_EQ(python->parameter_names(), builtin->parameter_names());
+    Rng rng(3);
+    std::vector<Eigen::VectorXd> points{*builtin->true_parameters(), builtin->known_optimum()->x.value()};
+    for (int i = 0; i < 30; ++i)
+        points.push_back(uniform_point(builtin->bounds(), rng));
+    std::vector<double> f(points.size());
+    python->evaluate_many(points, f);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double expected = builtin->evaluate(points[i]);
+        EXPECT_LE(std::fabs(f[i] - expected), 1e-12 * std::fabs(expected))
+            << i << ": " << f[i] << " vs " << expected;
+    }
+    const auto itlbo = builtin_algorithms().create("itlbo:np=10");
+    const auto identify = [&](const Problem& problem) {
+        Objective objective(problem, Budget{1000, std::nullopt, std::nullopt});
+        Rng stream(11);
+        run_to_budget(*itlbo, objective, stream);
+        return std::make_pair(objective.best_f(), objective.best_x());
+    };
+    const auto [python_f, python_x] = identify(*python);
+    const auto [builtin_f, builtin_x] = identify(*builtin);
+    EXPECT_LE(std::fabs(python_f - builtin_f), 1e-12 * builtin_f);
+    EXPECT_LE((python_x - builtin_x).cwiseAbs().maxCoeff(), 1e-12);
 }
 
 TEST(ExternalProblem, ABatchThatCrossesTheBudgetIsEvaluatedExactlyUpToIt) {
