@@ -14,6 +14,7 @@ void register_etlbo(AlgorithmRegistry& registry);
 void register_jaya(AlgorithmRegistry& registry);
 void register_nlopt(AlgorithmRegistry& registry);
 void register_random_search(AlgorithmRegistry& registry);
+void register_external_optimizer(AlgorithmRegistry& registry);
 
 void register_builtin_algorithms(AlgorithmRegistry& registry) {
     register_itlbo(registry);
@@ -27,6 +28,7 @@ void register_builtin_algorithms(AlgorithmRegistry& registry) {
     register_jaya(registry);
     register_nlopt(registry);
     register_random_search(registry);
+    register_external_optimizer(registry);
 }
 
 const AlgorithmRegistry& builtin_algorithms() {

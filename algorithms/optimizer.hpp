@@ -24,6 +24,12 @@ public:
     // (e.g. a deterministic method that has converged); may also be unwound by BudgetExhausted
     // from objective.evaluate(). Must draw every random number from `rng`.
     virtual void run(Objective& objective, Rng& rng) const = 0;
+
+    // What determines this optimiser's numbers beyond its spec and implementation version, as one
+    // line that joins the identity of its runs: for an external program, the SHA-256 of its code
+    // and the version it announces (problems/external/command.hpp). Empty for built-ins, so that
+    // their run identities are unchanged.
+    [[nodiscard]] virtual std::string identity_facts() const { return {}; }
 };
 
 // Runs `optimizer` to the end of the budget: BudgetExhausted is the normal way out, after which

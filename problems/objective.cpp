@@ -146,7 +146,8 @@ void Objective::evaluate_batch(std::span<Eigen::VectorXd> x, std::span<double> f
     // Only these are computed ahead; a target reached or an error on the way may still stop the
     // bookkeeping earlier, and then some values computed are dropped (never counted).
     std::size_t ahead = 0;
-    if (problem_.parallel_evaluation() && x.size() > 1 && !exhausted()) {
+    const bool batched = problem_.batch_evaluation();
+    if ((batched || problem_.parallel_evaluation()) && x.size() > 1 && !exhausted()) {
         const auto room =
             static_cast<std::size_t>(std::min(remaining_evaluations(), static_cast<std::int64_t>(x.size())));
         while (ahead < room && x[ahead].size() == problem_.dimension())
@@ -163,23 +164,35 @@ void Objective::evaluate_batch(std::span<Eigen::VectorXd> x, std::span<double> f
     std::vector<Eigen::VectorXd> repaired(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(ahead));
     std::vector<double> values(ahead);
     std::vector<std::exception_ptr> errors(ahead);
-    // Isolated: a thread waiting here helps with these points only, and never starts another
-    // task of the caller's (another run of the study) in the middle of this one's iteration.
-    tbb::this_task_arena::isolate([&] {
-        tbb::parallel_for(
-            tbb::blocked_range<std::size_t>(0, ahead, 1),
-            [&](const tbb::blocked_range<std::size_t>& range) {
-                for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                    try {
-                        repair(repaired[i]);
-                        values[i] = problem_.evaluate(repaired[i]);
-                    } catch (...) {
-                        errors[i] = std::current_exception();
+    if (batched) {
+        // One call for the whole batch (one message to an external program). Its failure is
+        // that of the first point: none of the batch is counted, as when evaluate() throws.
+        try {
+            for (auto& r : repaired)
+                repair(r);
+            problem_.evaluate_many(repaired, values);
+        } catch (...) {
+            errors[0] = std::current_exception();
+        }
+    } else {
+        // Isolated: a thread waiting here helps with these points only, and never starts another
+        // task of the caller's (another run of the study) in the middle of this one's iteration.
+        tbb::this_task_arena::isolate([&] {
+            tbb::parallel_for(
+                tbb::blocked_range<std::size_t>(0, ahead, 1),
+                [&](const tbb::blocked_range<std::size_t>& range) {
+                    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        try {
+                            repair(repaired[i]);
+                            values[i] = problem_.evaluate(repaired[i]);
+                        } catch (...) {
+                            errors[i] = std::current_exception();
+                        }
                     }
-                }
-            },
-            tbb::simple_partitioner());
-    });
+                },
+                tbb::simple_partitioner());
+        });
+    }
 
     for (std::size_t i = 0; i < x.size(); ++i) {
         if (i >= ahead) {

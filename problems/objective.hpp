@@ -80,7 +80,9 @@ public:
     // the problem throws), after which the remaining x are left as given and their f unset.
     // When problem.parallel_evaluation() is true and more than one point fits in the budget,
     // the values of those points (never more: an evaluation may cost a simulation) are computed
-    // in parallel with oneTBB; otherwise this is the plain loop. Throws std::logic_error unless
+    // in parallel with oneTBB; when problem.batch_evaluation() is true they are handed to
+    // problem.evaluate_many() in one call (a failure there is the first point's); otherwise this
+    // is the plain loop. Throws std::logic_error unless
     // f.size() == x.size().
     void evaluate_batch(std::span<Eigen::VectorXd> x, std::span<double> f);
 

@@ -20,4 +20,12 @@ void Box::validate(const std::string& owner) const {
     }
 }
 
+void Problem::evaluate_many(std::span<const Eigen::VectorXd> x, std::span<double> f) const {
+    if (f.size() != x.size())
+        throw std::logic_error("Problem::evaluate_many: " + std::to_string(x.size()) + " points, " +
+                               std::to_string(f.size()) + " places for values");
+    for (std::size_t i = 0; i < x.size(); ++i)
+        f[i] = evaluate(x[i]);
+}
+
 } // namespace mhb

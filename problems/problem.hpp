@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,20 @@ public:
     // True when one evaluation costs a simulation, so that a population is worth evaluating in
     // parallel inside a run (Objective::evaluate_batch); cheap functions say false.
     [[nodiscard]] virtual bool parallel_evaluation() const { return false; }
+
+    // True when many points cost much less in one call than one by one (an external program:
+    // one message for a batch); Objective::evaluate_batch then hands the points that fit in the
+    // budget to evaluate_many() at once.
+    [[nodiscard]] virtual bool batch_evaluation() const { return false; }
+    // f[i] = evaluate(x[i]) for every i (sizes equal); the default is that loop. Like evaluate():
+    // const and safe to call from many threads at once.
+    virtual void evaluate_many(std::span<const Eigen::VectorXd> x, std::span<double> f) const;
+
+    // What determines this problem's values beyond its spec and data files, as one line that
+    // joins the identity of its runs: for an external program, the SHA-256 of its code and the
+    // version it announces (problems/external/command.hpp). Empty for in-process problems, so
+    // that their run identities are unchanged.
+    [[nodiscard]] virtual std::string identity_facts() const { return {}; }
 };
 
 } // namespace mhb

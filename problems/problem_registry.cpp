@@ -7,12 +7,14 @@ void register_classic_functions(ProblemRegistry& registry);
 void register_bbob(ProblemRegistry& registry);
 void register_pmsm(ProblemRegistry& registry);
 void register_cec(ProblemRegistry& registry);
+void register_external_problem(ProblemRegistry& registry);
 
 void register_builtin_problems(ProblemRegistry& registry) {
     register_classic_functions(registry);
     register_bbob(registry);
     register_pmsm(registry);
     register_cec(registry);
+    register_external_problem(registry);
 }
 
 const ProblemRegistry& builtin_problems() {

@@ -47,6 +47,12 @@ std::string module_note(const std::string& name, const std::vector<DataFile>& mo
                                                           : std::string();
 }
 
+// The fact line of an external program's code and announced version (Problem::identity_facts,
+// Optimizer::identity_facts); none for in-process components, whose identities stay as they were.
+std::string program_fact(const std::string& name, const std::string& facts) {
+    return facts.empty() ? std::string() : name + " = " + facts + '\n';
+}
+
 // "pso" of "pso:w=0.7".
 std::string component_name(const std::string& spec) {
     return spec.substr(0, spec.find(':'));
@@ -62,14 +68,18 @@ RunKey run_key(const PreparedStudy& study, std::int64_t run_id) {
     RunKey key;
     key.algorithm = request.algorithm_spec;
     key.problem = request.problem_spec;
-    key.facts =
-        "format = " + std::to_string(store_format_version) + '\n' + "algorithm = " + request.algorithm_spec +
-        '\n' + version_fact("algorithm version", study.algorithm_versions, a) +
-        module_fact("algorithm module", study.algorithm_modules, a) +
-        "problem = " + study.problem_identities[p] + '\n' +
-        version_fact("problem version", study.problem_versions, p) +
-        module_fact("problem module", study.problem_modules, p) + "budget = " + request.budget_text + '\n' +
-        "run = " + std::to_string(request.run_index) + '\n' + "seed = " + std::to_string(request.seed) + '\n';
+    key.facts = "format = " + std::to_string(store_format_version) + '\n' +
+                "algorithm = " + request.algorithm_spec + '\n' +
+                version_fact("algorithm version", study.algorithm_versions, a) +
+                module_fact("algorithm module", study.algorithm_modules, a) +
+                program_fact("algorithm program",
+                             a < study.optimizers.size() ? study.optimizers[a]->identity_facts() : "") +
+                "problem = " + study.problem_identities[p] + '\n' +
+                version_fact("problem version", study.problem_versions, p) +
+                module_fact("problem module", study.problem_modules, p) +
+                program_fact("problem program", study.problems[p]->identity_facts()) +
+                "budget = " + request.budget_text + '\n' + "run = " + std::to_string(request.run_index) +
+                '\n' + "seed = " + std::to_string(request.seed) + '\n';
     key.identity = sha256_hex(key.facts);
     const std::string& label =
         a < study.algorithms.size() ? study.algorithms[a].label : request.algorithm_spec;
@@ -132,6 +142,14 @@ std::string describe_run_change(const RunKey& stored, const RunKey& wanted) {
         return name + ": the plugin " + value_or(new_notes, kind + " module file") +
                " changed since the study started (sha256 " + short_hash(before) + " -> " + short_hash(after) +
                ")";
+    }
+    // An external program's code or announced version changed.
+    for (const std::string kind : {"algorithm", "problem"}) {
+        const std::string before = value_or(old_facts, kind + " program");
+        const std::string after = value_or(new_facts, kind + " program");
+        if (before != after)
+            return kind + " '" + value_or(new_facts, kind) + "': the external program changed (" + before +
+                   " -> " + after + ")";
     }
     if (value_or(old_facts, "problem") != value_or(new_facts, "problem")) {
         // A data file's content (its path is the same: the slot matched).

@@ -114,7 +114,16 @@ std::vector<std::string> split_spec_list(std::string_view text) {
     std::vector<std::string> out;
     std::string current;
     int depth = 0;
+    char quote = 0;
     for (const char c : text) {
+        if (quote != 0) {
+            current += c;
+            if (c == quote)
+                quote = 0;
+            continue;
+        }
+        if (c == '\'' || c == '"')
+            quote = c;
         if (c == '{')
             ++depth;
         else if (c == '}')

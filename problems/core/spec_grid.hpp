@@ -32,7 +32,8 @@ inline constexpr std::size_t max_grid_variants = 100000;
 std::vector<GridVariant> expand_grid(std::string_view text);
 
 // Splits a list of specs given as one string, separated by spaces (as `--algorithms "a b"`);
-// spaces inside braces do not separate (`pso:w={0.4, 0.5}` is one spec).
+// spaces inside braces do not separate (`pso:w={0.4, 0.5}` is one spec), nor do spaces inside
+// '...' or "..." (kept with their quotes: `external:cmd='python3 model.py'` is one spec).
 std::vector<std::string> split_spec_list(std::string_view text);
 
 } // namespace mhb

@@ -61,14 +61,31 @@ std::size_t component_count(const std::vector<std::string>& specs) {
 
 // The built-in problems, PMSM's factory replaced by a cheap stand-in: a pmsm spec is still
 // validated parameter by parameter, but no drive is simulated (a second per problem) and no `data=`
-// file named by the fuzzer is read (such as /dev/zero, which never ends).
+// file named by the fuzzer is read (such as /dev/zero, which never ends). So is `external`'s: a
+// fuzzer must never run the commands it writes.
 const mhb::ProblemRegistry& problems() {
     static const mhb::ProblemRegistry registry = [] {
         mhb::ProblemRegistry out(mhb::builtin_problems().kind());
         for (auto entry : mhb::builtin_problems().entries()) {
-            if (entry.name == "pmsm")
+            if (entry.name == "pmsm" || entry.name == "external")
                 entry.factory = [](const mhb::ParameterValues&) {
                     return mhb::builtin_problems().create("sphere:dim=4");
+                };
+            out.add(std::move(entry));
+        }
+        return out;
+    }();
+    return registry;
+}
+
+// The built-in optimisers, `external`'s factory replaced by random search's (see problems()).
+const mhb::AlgorithmRegistry& algorithms() {
+    static const mhb::AlgorithmRegistry registry = [] {
+        mhb::AlgorithmRegistry out(mhb::builtin_algorithms().kind());
+        for (auto entry : mhb::builtin_algorithms().entries()) {
+            if (entry.name == "external")
+                entry.factory = [](const mhb::ParameterValues&) {
+                    return mhb::builtin_algorithms().create("random-search");
                 };
             out.add(std::move(entry));
         }
@@ -92,7 +109,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     std::string ini;
     try {
-        const mhb::PreparedStudy prepared = mhb::prepare_study(study, mhb::builtin_algorithms(), problems());
+        const mhb::PreparedStudy prepared = mhb::prepare_study(study, algorithms(), problems());
         if (prepared.run_count() < 1)
             std::abort();
         ini = mhb::study_ini(prepared.study);

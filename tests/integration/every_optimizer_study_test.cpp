@@ -24,7 +24,10 @@ using mhb::test_support::read_text;
 Study every_optimizer_study() {
     Study study;
     for (const auto& entry : builtin_algorithms().entries())
-        study.algorithms.push_back(entry.name);
+        study.algorithms.push_back(entry.name != "external"
+                                       ? entry.name
+                                       : "external:cmd='/usr/bin/python3 " + std::string(MHB_SOURCE_DIR) +
+                                             "/scripts/external/one_plus_one_es.py'");
     study.problems = {"sphere:dim=5", "rastrigin:dim=5,shift=1,instance=11", "pmsm:speed=2500,load=2"};
     study.runs = 2;
     study.seed = 7;

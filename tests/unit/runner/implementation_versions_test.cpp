@@ -79,8 +79,17 @@ std::string problem_number(const std::string& spec) {
     return exact(problem->evaluate(x));
 }
 
+// `spec` with @SOURCE@ replaced by the source tree (the external protocol's reference clients
+// are named by path).
+std::string with_source(std::string spec) {
+    for (auto at = spec.find("@SOURCE@"); at != std::string::npos; at = spec.find("@SOURCE@"))
+        spec.replace(at, 8, MHB_SOURCE_DIR);
+    return spec;
+}
+
 std::string computed(const GoldenRow& row) {
-    return row.kind == "algorithm" ? algorithm_number(row.spec) : problem_number(row.spec);
+    return row.kind == "algorithm" ? algorithm_number(with_source(row.spec))
+                                   : problem_number(with_source(row.spec));
 }
 
 int registered_version(const GoldenRow& row) {

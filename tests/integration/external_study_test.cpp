@@ -1,0 +1,136 @@
+// External programs in a real `mhbench run` study: a Python optimiser beside a built-in one on a
+// Python problem, byte-identical with 1 and 2 threads; a problem whose program crashes fails its
+// own runs with one line each while the study's other runs finish; a changed script is refused
+// on extension like a changed data file.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <string>
+#include <thread>
+
+#include "cli_harness.hpp"
+#include "support/external_clients.hpp"
+#include "support/processes.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using mhb::testing_cli::lines_of;
+using mhb::testing_cli::read_text;
+using mhb::testing_cli::run_mhbench;
+using mhb::testing_cli::scratch_directory;
+
+fs::path fresh(const std::string& name) {
+    const fs::path dir = scratch_directory() / name;
+    fs::remove_all(dir);
+    return dir;
+}
+
+// A spec with blanks in cmd, quoted for the shell (the quotes inside keep it one spec).
+std::string spec(const std::string& kind, const std::string& command, const std::string& options = "") {
+    return "\"" + kind + ":cmd='" + command + "'" + (options.empty() ? "" : "," + options) + "\"";
+}
+
+std::string python(const std::string& script, const std::string& arguments = "") {
+    return "/usr/bin/python3 " + script + (arguments.empty() ? "" : " " + arguments);
+}
+
+const std::string es = std::string(MHB_SOURCE_DIR) + "/scripts/external/one_plus_one_es.py";
+const std::string sphere = std::string(MHB_SOURCE_DIR) + "/scripts/external/sphere_problem.py";
+const std::string faulty = std::string(MHB_TEST_DATA_DIR) + "/external/faulty_problem.py";
+
+TEST(ExternalStudy, PythonOptimiserAndProblemGiveTheSameRecordsOnOneAndTwoThreads) {
+    // The reference clients ignore further arguments: a marker that only this test's processes carry.
+    const std::string study =
+        "--algorithm " + spec("external", python(es, "study-es-marker"), "params=lambda=5") +
+        " --algorithms random-search --problem " +
+        spec("external", python(sphere, "study-sphere-marker"), "params=dim=4,workers=2") +
+        " --runs 3 --evaluations 300 --seed 5 --no-report";
+    const fs::path one = fresh("external1");
+    const fs::path two = fresh("external2");
+    const auto a = run_mhbench("run " + study + " --threads 1 --out " + one.string());
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    const auto b = run_mhbench("run " + study + " --threads 2 --out " + two.string());
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    for (const char* name : {"runs.csv", "curves.csv", "checkpoints.csv", "study.ini"})
+        EXPECT_EQ(read_text(one / name), read_text(two / name)) << name;
+    const auto rows = lines_of(read_text(one / "runs.csv"));
+    EXPECT_EQ(rows.size(), 7U); // 2 algorithms x 3 runs and the header
+    EXPECT_EQ(read_text(one / "runs.csv").find(",false,"), std::string::npos) << read_text(one / "runs.csv");
+    // Extending the study from its own study.ini computes nothing new.
+    const auto c = run_mhbench("run --study-file " + (one / "study.ini").string() +
+                               " --threads 2 --no-report --out " + one.string());
+    EXPECT_EQ(c.exit_code, 0) << c.err;
+    EXPECT_TRUE(mhb::test_support::processes_with("study-sphere-marker").empty());
+    EXPECT_TRUE(mhb::test_support::processes_with("study-es-marker").empty());
+}
+
+TEST(ExternalStudy, ACrashingProblemFailsItsOwnRunsAndTheOthersFinish) {
+    const fs::path dir = fresh("external_crash");
+    const auto r =
+        run_mhbench("run --algorithms random-search --problems sphere:dim=2 --problem " +
+                    spec("external", python(faulty, "crash 3 study-crash-marker")) +
+                    " --runs 2 --evaluations 300 --seed 5 --no-report --threads 2 --out " + dir.string());
+    const std::string runs = read_text(dir / "runs.csv");
+    const auto rows = lines_of(runs);
+    ASSERT_EQ(rows.size(), 5U) << r.err;
+    int failed = 0;
+    for (const auto& row : rows)
+        if (row.find("exited with status 3; its stderr: faulty: segmentation fault in the model") !=
+            std::string::npos)
+            ++failed;
+    EXPECT_EQ(failed, 2) << runs;
+    EXPECT_TRUE(mhb::test_support::processes_with("study-crash-marker").empty());
+}
+
+TEST(ExternalStudy, AChangedScriptIsRefusedOnExtension) {
+    const fs::path dir = fresh("external_changed");
+    const fs::path script = scratch_directory() / "changing_sphere.py";
+    fs::copy_file(sphere, script, fs::copy_options::overwrite_existing);
+    const std::string study = "--algorithms random-search --problem " +
+                              spec("external", python(script.string())) +
+                              " --runs 1 --evaluations 100 --seed 5 --no-report --out " + dir.string();
+    const auto a = run_mhbench("run " + study);
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    { std::ofstream(script, std::ios::app) << "# changed\n"; }
+    const auto b = run_mhbench("run " + study);
+    EXPECT_NE(b.exit_code, 0);
+    EXPECT_NE(b.err.find("the external program changed"), std::string::npos) << b.err;
+}
+
+// mhbench killed (SIGKILL: no handler runs) or stopped (SIGTERM twice) while an external problem
+// hangs with a grandchild of its own: neither the program nor what it started outlives mhbench.
+TEST(ExternalStudy, NoProgramOutlivesMhbenchKilledOrStopped) {
+    for (const char* signal : {"KILL", "TERM"}) {
+        const std::string marker = std::string("outlive-marker-") + signal;
+        const fs::path dir = fresh(std::string("external_kill_") + signal);
+        const fs::path pid_file = scratch_directory() / (marker + ".pid");
+        std::string command = "'";
+        command += MHB_CLI_PATH;
+        command += "' run --algorithms random-search --problem ";
+        command += spec("external", python(faulty, "hang 1 " + marker), "timeout=100");
+        command += " --runs 1 --evaluations 100 --no-report --out " + dir.string();
+        command += " >/dev/null 2>&1 & echo $! > '" + pid_file.string() + "'";
+        ASSERT_EQ(std::system(command.c_str()), 0);
+        // The program, its grandchild, the watcher and mhbench itself carry the marker.
+        ASSERT_TRUE(mhb::test_support::wait_until(
+            [&] {
+                return mhb::test_support::processes_with({"time.sleep(1000)", marker}).size() == 1;
+            },
+            20.0));
+        const std::string pid = mhb::testing_cli::read_text(pid_file);
+        // A first SIGTERM lets the runs under way finish (bounded by timeout=); the second ends
+        // mhbench at once (its handler is reset), like a second Ctrl-C.
+        ASSERT_EQ(std::system(("kill -" + std::string(signal) + " " + pid).c_str()), 0);
+        if (std::string(signal) == "TERM") {
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+            ASSERT_EQ(std::system(("kill -TERM " + pid).c_str()), 0);
+        }
+        EXPECT_TRUE(mhb::test_support::wait_until(
+            [&] { return mhb::test_support::processes_with(marker).empty(); }, 10.0))
+            << signal << ": " << mhb::test_support::processes_with(marker).size() << " left";
+    }
+}
+
+} // namespace
