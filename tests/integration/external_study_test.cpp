@@ -99,6 +99,51 @@ TEST(ExternalStudy, AChangedScriptIsRefusedOnExtension) {
     EXPECT_NE(b.err.find("the external program changed"), std::string::npos) << b.err;
 }
 
+// The README's worked example, smaller: a Python optimiser beside built-ins on CEC 2017 F1-F5,
+// with the report's tables naming it beside them.
+TEST(ExternalStudy, APythonOptimiserIsComparedWithTheBuiltInsOnCec2017) {
+    const fs::path dir = fresh("external_cec");
+    const auto r =
+        run_mhbench("run --algorithm " + spec("external", python(es, "cec-es-marker"), "label=python-es") +
+                    " --algorithms 'itlbo pso' --problems cec2017:f=1-5,dim=10 --runs 2 "
+                    "--evaluations 1000 --no-figures --quiet --out " +
+                    dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(lines_of(read_text(dir / "runs.csv")).size(), 31U); // 3 algorithms x 5 functions x 2 runs
+    const std::string report = read_text(dir / "report" / "report.md");
+    for (const char* label : {"python-es", "itlbo", "pso"})
+        EXPECT_NE(report.find(label), std::string::npos) << label;
+    EXPECT_TRUE(mhb::test_support::processes_with("cec-es-marker").empty());
+}
+
+// SIGKILL of mhbench while external programs compute (a Python optimiser and a Python problem
+// served by two workers), then the same command: the records of a study run at once, byte for
+// byte, and no program of the killed session left.
+TEST(ExternalStudy, SigkillDuringExternalRunsLeavesADirectoryTheSameCommandCompletes) {
+    const fs::path dir = fresh("external_killed");
+    const fs::path reference = fresh("external_killed_reference");
+    const std::string study =
+        "run --quiet --no-report --algorithm " +
+        spec("external", python(es, "killed-es-marker"), "params=lambda=4") +
+        " --algorithms random-search --problem " +
+        spec("external", python(sphere, "killed-sphere-marker"), "params=dim=3,workers=2") +
+        " --runs 8 --evaluations 3000 --seed 9 --threads 2 --out ";
+    ASSERT_EQ(run_mhbench(study + reference.string()).exit_code, 0);
+    const std::string command = std::string("'") + MHB_CLI_PATH + "' " + study + "'" + dir.string() + "'";
+    const auto killed = mhb::testing_cli::run_shell(
+        command + " & pid=$!; i=0; while ! [ -s '" + (dir / "store.bin").string() +
+        "' ] && [ $i -lt 2000 ]; do sleep 0.01; i=$((i+1)); done; kill -KILL $pid; "
+        "wait $pid; exit $?");
+    EXPECT_EQ(killed.exit_code, 137) << killed.err;
+    EXPECT_TRUE(mhb::test_support::wait_until(
+        [&] { return mhb::test_support::processes_with("killed-sphere-marker").empty(); }, 10.0));
+    const auto again = mhb::testing_cli::run_shell(command);
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    for (const char* file : {"runs.csv", "curves.csv", "checkpoints.csv", "improvements.csv"})
+        EXPECT_EQ(read_text(dir / file), read_text(reference / file)) << file;
+    EXPECT_TRUE(mhb::test_support::processes_with("killed-es-marker").empty());
+}
+
 // mhbench killed (SIGKILL: no handler runs) or stopped (SIGTERM twice) while an external problem
 // hangs with a grandchild of its own: neither the program nor what it started outlives mhbench.
 TEST(ExternalStudy, NoProgramOutlivesMhbenchKilledOrStopped) {
