@@ -7,7 +7,8 @@
 # (report/index.html checked in a headless browser: scripts/browser-check.sh), `setup-debian.sh tex`
 # pdflatex with latex-base and latex-recommended, and the journal classes IEEEtran and elsarticle
 # (texlive-publishers) with the Times fonts IEEEtran uses (texlive-fonts-recommended): report.tex
-# and the tables in two-column journals compiled by scripts/latex-check.sh.
+# and the tables in two-column journals compiled by scripts/latex-check.sh, `setup-debian.sh octave`
+# Octave for the external protocol's Octave client (scripts/octave-check.sh).
 set -euo pipefail
 
 packages=(
@@ -30,6 +31,7 @@ optional_ccache=(ccache)                 # .ci/run: the MPI build reuses the rel
 optional_browser=(chromium)              # scripts/browser-check.sh: the HTML report in headless Chromium
 optional_tex=(texlive-latex-base texlive-latex-recommended lmodern # scripts/latex-check.sh: pdflatex,
     texlive-publishers texlive-fonts-recommended)                    # IEEEtran, elsarticle, Times
+optional_octave=(octave)                 # scripts/octave-check.sh: the external protocol's Octave client
 
 for group in "$@"; do
     case "$group" in
@@ -38,8 +40,9 @@ for group in "$@"; do
     ccache) packages+=("${optional_ccache[@]}") ;;
     browser) packages+=("${optional_browser[@]}") ;;
     tex) packages+=("${optional_tex[@]}") ;;
+    octave) packages+=("${optional_octave[@]}") ;;
     *)
-        echo "mhbench set-up: unknown optional group '$group' (known: fuzz, mpi, ccache, browser, tex)" >&2
+        echo "mhbench set-up: unknown optional group '$group' (known: fuzz, mpi, ccache, browser, tex, octave)" >&2
         exit 2
         ;;
     esac
