@@ -315,7 +315,9 @@ int run_run_command(const std::vector<std::string>& args) {
         if (distributed_rank() == 0) {
             for (const auto& line : differences)
                 std::cerr << "mhbench run: " << line << '\n';
-            std::cerr << "mhbench run: every rank must read the same data files; nothing was run\n";
+            std::cerr
+                << "mhbench run: every rank must read the same data files, plug-ins and programs; nothing "
+                   "was run\n";
         }
         return exit_failure;
     }

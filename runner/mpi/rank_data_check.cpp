@@ -1,6 +1,7 @@
 #include "runner/mpi/rank_data_check.hpp"
 
 #include <mpi.h>
+#include <sstream>
 
 #include "runner/context.hpp"
 #include "runner/data_provenance.hpp"
@@ -30,10 +31,39 @@ std::vector<std::string> gather_texts(const std::string& text, const MpiSession&
     return texts;
 }
 
+// What a rank's runs depend on beyond the study's text: its data files and plug-in modules (as
+// "data_file = SHA256 PATH" lines, so that a difference names the file), and what each external
+// program announced of itself (its code's SHA-256 and version: Optimizer/Problem::identity_facts).
+std::string rank_inputs(const PreparedStudy& study) {
+    std::string text = context_data_files(study.problems);
+    for (const auto* modules : {&study.algorithm_modules, &study.problem_modules})
+        for (const DataFile& module : *modules)
+            if (!module.sha256.empty())
+                text += "data_file = " + module.sha256 + " " + module.path + '\n';
+    for (std::size_t a = 0; a < study.optimizers.size(); ++a)
+        if (const std::string facts = study.optimizers[a]->identity_facts(); !facts.empty())
+            text += "program of " + study.algorithms[a].spec + " = " + facts + '\n';
+    for (std::size_t p = 0; p < study.problems.size(); ++p)
+        if (const std::string facts = study.problems[p]->identity_facts(); !facts.empty())
+            text += "program of " + study.problem_specs[p] + " = " + facts + '\n';
+    return text;
+}
+
+// The lines of `text` that `reference` does not have, each as "rank R: LINE".
+std::vector<std::string> lines_not_in(const std::string& text, const std::string& reference,
+                                      const std::string& rank) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        if (reference.find(line + '\n') == std::string::npos)
+            lines.push_back(rank + ": " + line + " (rank 0 has another)");
+    return lines;
+}
+
 } // namespace
 
 std::vector<std::string> rank_data_differences(const PreparedStudy& study, const MpiSession& session) {
-    const std::string mine = context_data_files(study.problems);
+    const std::string mine = rank_inputs(study);
     const std::vector<std::string> texts = gather_texts(mine, session);
     std::vector<std::string> lines;
     for (std::size_t r = 1; r < texts.size(); ++r) {
@@ -41,7 +71,9 @@ std::vector<std::string> rank_data_differences(const PreparedStudy& study, const
         auto differences =
             data_file_differences(recorded_data_files(texts[r]), rank, recorded_data_files(mine), "rank 0");
         if (differences.empty() && texts[r] != mine)
-            differences.push_back(rank + " read other data files than rank 0");
+            differences = lines_not_in(texts[r], mine, rank);
+        if (differences.empty() && texts[r] != mine)
+            differences.push_back(rank + " read fewer data files, plug-ins or programs than rank 0");
         lines.insert(lines.end(), differences.begin(), differences.end());
     }
     int refused = lines.empty() ? 0 : 1;

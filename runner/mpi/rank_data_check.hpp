@@ -1,7 +1,9 @@
 // Before any run of an MPI job: every rank prepared the study from its own copy of the data files
 // (on a cluster, each node reads its own file system), and a rank that read another content would
-// compute runs that rank 0 stores under its own data's identity. Rank 0 gathers every rank's
-// "data_file = SHA256 PATH" lines (runner/context.hpp) and compares them with its own.
+// compute runs that rank 0 stores under its own data's identity. The same holds for a plug-in
+// module and an external program's code. Rank 0 gathers every rank's "data_file = SHA256 PATH"
+// lines (runner/context.hpp; plug-in modules among them) and external programs' facts, and
+// compares them with its own.
 #pragma once
 
 #include <string>

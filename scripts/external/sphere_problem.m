@@ -6,9 +6,28 @@
 % null, which the protocol refuses: a model that can return them must send the strings "inf".
 1;  % a script, not a function file: the function below is defined, then called
 
+% One line of stdin without its newline, or -1 once mhbench has closed it. Read a character at a
+% time: Octave's fgetl on a pipe waits for more input than one line (it fills a buffer first),
+% which would deadlock against mhbench waiting for the answer.
+function line = read_line ()
+  line = "";
+  while true
+    c = fread (stdin, 1, "char=>char");
+    if (isempty (c))
+      if (isempty (line))
+        line = -1;
+      end
+      return;
+    elseif (c == "\n")
+      return;
+    end
+    line(end + 1) = c;
+  end
+end
+
 function serve ()
   while true
-    line = fgetl (stdin);
+    line = read_line ();
     if (! ischar (line))
       return;  % mhbench closed our stdin
     end

@@ -123,10 +123,36 @@ TEST(MpiCli, RanksThatReadDifferentDataAreRefusedBeforeAnyRun) {
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.err.find("mhbench run: /proc/self/cwd/drive.csv: sha256 "), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(" in rank 1, sha256 "), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("mhbench run: every rank must read the same data files; nothing was run"),
-              std::string::npos)
+    EXPECT_NE(
+        r.err.find(
+            "mhbench run: every rank must read the same data files, plug-ins and programs; nothing was run"),
+        std::string::npos)
         << r.err;
     EXPECT_FALSE(fs::exists(out)); // refused before rank 0 touched the directory
+}
+
+// The same for an external program: each rank runs its own copy of the model's script.
+TEST(MpiCli, RanksThatRunDifferentExternalProgramsAreRefusedBeforeAnyRun) {
+    const fs::path a = fresh("program_a");
+    const fs::path b = fresh("program_b");
+    fs::create_directories(a);
+    fs::create_directories(b);
+    const fs::path script = fs::path(MHB_SOURCE_DIR) / "scripts/external/sphere_problem.py";
+    fs::copy_file(script, a / "model.py");
+    fs::copy_file(script, b / "model.py");
+    std::ofstream(b / "model.py", std::ios::app) << "# another version\n";
+    const fs::path out = fresh("program_out");
+    const std::string run = std::string(" '") + MHB_CLI_PATH +
+                            "' run --algorithms pso --problem \"external:cmd='/usr/bin/python3 "
+                            "/proc/self/cwd/model.py'\" --evaluations 100 --runs 2 --no-report --out " +
+                            out.string();
+    const auto r = run_shell(std::string("timeout 300 ") + MHB_MPIEXEC +
+                             " --allow-run-as-root --oversubscribe -n 1 --wdir " + a.string() + run +
+                             " : -n 1 --wdir " + b.string() + run);
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("mhbench run: rank 1: program of external:cmd="), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("(rank 0 has another)"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
 }
 
 } // namespace

@@ -95,6 +95,21 @@ TEST(ExternalOptimizer, EarlyDoneEndsTheRunWithWhatWasEvaluated) {
     EXPECT_EQ(objective.evaluations(), 6);
 }
 
+TEST(ExternalOptimizer, ABudgetOfIterationsAloneIsRefusedBeforeTheProgramStarts) {
+    const auto problem = builtin_problems().create("sphere:dim=2");
+    const auto optimizer = external(test_client("faulty_optimizer.py", "done 3 iterations-marker"));
+    Objective objective(*problem, Budget{std::nullopt, 10, std::nullopt});
+    Rng rng(1);
+    try {
+        run_to_budget(*optimizer, objective, rng);
+        ADD_FAILURE() << "an external optimiser ran with iterations alone";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("needs an evaluation budget (--evaluations N"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_EQ(objective.evaluations(), 0);
+}
+
 TEST(ExternalOptimizer, ACrashOrAHangFailsTheRunWithOneLineAndNoProcessLeft) {
     const auto problem = builtin_problems().create("sphere:dim=2");
     for (const auto& [mode, message] : std::vector<std::pair<std::string, std::string>>{
