@@ -58,9 +58,10 @@ public:
         // The program reports its iterations only if it wants to: with a budget of iterations
         // alone, one that never does would never be stopped.
         if (!objective.budget().max_evaluations)
-            throw std::runtime_error("external optimizer '" + command_ +
-                                     "': needs an evaluation budget (--evaluations N, beside --iterations "
-                                     "if wanted): a program that never reports an iteration would never stop");
+            throw std::runtime_error(
+                "external optimizer '" + command_ +
+                "': needs an evaluation budget (--evaluations N, beside --iterations "
+                "if wanted): a program that never reports an iteration would never stop");
         const std::uint64_t seed = rng.next();
         try {
             ChildLink link(argv_);

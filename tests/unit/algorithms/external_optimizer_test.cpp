@@ -104,7 +104,8 @@ TEST(ExternalOptimizer, ABudgetOfIterationsAloneIsRefusedBeforeTheProgramStarts)
         run_to_budget(*optimizer, objective, rng);
         ADD_FAILURE() << "an external optimiser ran with iterations alone";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("needs an evaluation budget (--evaluations N"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("needs an evaluation budget (--evaluations N"),
+                  std::string::npos)
             << e.what();
     }
     EXPECT_EQ(objective.evaluations(), 0);
