@@ -26,6 +26,20 @@ set(MHB_PUBLIC_HEADERS
     problems/trace_recorder.hpp
     runner/plugin_api.hpp)
 
+# A fingerprint of the contract's headers, in every plug-in's build settings and in mhbench's own
+# (runner/plugin_api.hpp): a plug-in built against other headers is refused, whatever changed in
+# them. Sizes alone miss a virtual function added, which moves every later entry of the vtable.
+# CMake configures again when one of the headers changes.
+set(mhb_contract_text "")
+foreach(header IN LISTS MHB_PUBLIC_HEADERS)
+    file(READ ${PROJECT_SOURCE_DIR}/${header} mhb_header_text)
+    string(APPEND mhb_contract_text "${header}\n${mhb_header_text}")
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${header})
+endforeach()
+string(SHA256 mhb_contract_sha256 "${mhb_contract_text}")
+string(SUBSTRING ${mhb_contract_sha256} 0 16 MHB_PLUGIN_CONTRACT)
+target_compile_definitions(mhb_runner PRIVATE MHB_PLUGIN_CONTRACT="${MHB_PLUGIN_CONTRACT}")
+
 add_library(mhb_api INTERFACE)
 add_library(mhbench::mhbench ALIAS mhb_api)
 set_target_properties(mhb_api PROPERTIES EXPORT_NAME mhbench)
@@ -33,6 +47,7 @@ target_include_directories(mhb_api INTERFACE $<BUILD_INTERFACE:${PROJECT_SOURCE_
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/mhbench>)
 target_link_libraries(mhb_api INTERFACE Eigen3::Eigen)
 target_compile_features(mhb_api INTERFACE cxx_std_20)
+target_compile_definitions(mhb_api INTERFACE MHB_PLUGIN_CONTRACT="${MHB_PLUGIN_CONTRACT}")
 
 foreach(header IN LISTS MHB_PUBLIC_HEADERS)
     get_filename_component(folder ${header} DIRECTORY)

@@ -109,6 +109,8 @@ TEST(PluginCli, EachUnusableModuleIsRefusedInOneLine) {
          "is not an mhbench plug-in (no mhbench_plugin entry point"},
         {test_plugins + "/test_plugin_old_abi.so",
          "built for plug-in ABI 999, this mhbench has ABI 1; rebuild the plug-in"},
+        {test_plugins + "/test_plugin_other_contract.so",
+         "built with contract=0123456789abcdef, this mhbench has contract="},
         {test_plugins + "/test_plugin_misaligned.so",
          "built with eigen_max_align_bytes=64, this mhbench has eigen_max_align_bytes="},
         {test_plugins + "/test_plugin_clash.so",
