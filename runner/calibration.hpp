@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "results/run_record.hpp"
+#include "results/store/run_record.hpp"
 #include "runner/execute_run.hpp"
 #include "runner/study.hpp"
 

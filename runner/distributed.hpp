@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/study.hpp"
 

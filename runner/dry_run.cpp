@@ -5,8 +5,8 @@
 #include <set>
 #include <sstream>
 
-#include "results/cec_protocol.hpp"
-#include "results/store.hpp"
+#include "results/analysis/cec_protocol.hpp"
+#include "results/store/store.hpp"
 #include "runner/calibration.hpp"
 
 namespace mhb {

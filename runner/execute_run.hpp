@@ -9,7 +9,7 @@
 #include "algorithms/optimizer.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem.hpp"
-#include "results/run_record.hpp"
+#include "results/store/run_record.hpp"
 
 namespace mhb {
 

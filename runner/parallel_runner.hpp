@@ -14,7 +14,7 @@
 #include <optional>
 #include <vector>
 
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/study.hpp"
 
 namespace mhb {

@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <string>
 
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/study.hpp"
 
 namespace mhb {

@@ -13,7 +13,7 @@
 #include "problems/core/rng.hpp"
 #include "problems/core/spec.hpp"
 #include "problems/core/spec_grid.hpp"
-#include "results/cec_protocol.hpp"
+#include "results/analysis/cec_protocol.hpp"
 
 namespace mhb {
 namespace {

@@ -23,8 +23,8 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem_registry.hpp"
-#include "results/dimension_budget.hpp"
-#include "results/store.hpp"
+#include "results/analysis/dimension_budget.hpp"
+#include "results/store/store.hpp"
 #include "runner/execute_run.hpp"
 
 namespace mhb {
@@ -39,7 +39,7 @@ std::string_view seed_mode_name(SeedMode mode);
 
 // A study's budget: a Budget whose evaluation count may depend on the problem's dimension, as the
 // CEC protocols set theirs (`evaluations=10000*dim`, `evaluations=dim10:200000+dim20:1000000`:
-// results/dimension_budget.hpp). It is one budget of the study (one report for all dimensions, its
+// results/analysis/dimension_budget.hpp). It is one budget of the study (one report for all dimensions, its
 // text in every run's record and identity); each run gets the count of its problem's dimension.
 struct StudyBudget : Budget {
     StudyBudget() = default;
@@ -70,7 +70,7 @@ struct Study {
     // Iterations and/or evaluations (whichever is spent first), optional target; several budgets
     // make the budget a factor of the study, each reported separately.
     std::vector<StudyBudget> budgets{StudyBudget{}};
-    // A CEC competition protocol the study follows ("cec2017", "cec2022"; results/cec_protocol.hpp),
+    // A CEC competition protocol the study follows ("cec2017", "cec2022"; results/analysis/cec_protocol.hpp),
     // or empty. It changes no run: its problems must be of the protocol's suite and its budgets give
     // an evaluation count, and the report adds the competition's tables and result files. (Its
     // initializer spares aggregate initialisations that end before it a -Wmissing-field-initializers.)
@@ -87,7 +87,7 @@ inline constexpr std::int64_t max_runs_per_pair = 1000000;
 // files use it.
 std::string budget_text(const StudyBudget& budget);
 // The inverse of budget_text (keys in any order; 1e5 is accepted, and evaluations that depend on
-// the dimension: results/dimension_budget.hpp). Throws std::invalid_argument naming the key and
+// the dimension: results/analysis/dimension_budget.hpp). Throws std::invalid_argument naming the key and
 // what is allowed.
 StudyBudget parse_budget(std::string_view text);
 

@@ -14,9 +14,10 @@
 //   budget = evaluations=15050
 //   iterations = 150                           or the single-budget keys, as on the command line
 //   target = 1e-8                              optional
-//   budget = evaluations=10000*dim             evaluations by dimension (results/dimension_budget.hpp)
-//   protocol = cec2017                         a CEC protocol's tables and files (results/cec_protocol.hpp)
-//   plugins = /path/mine.so                    plug-in modules naming components (runner/plugin_loader.hpp)
+//   budget = evaluations=10000*dim             evaluations by dimension
+//   (results/analysis/dimension_budget.hpp) protocol = cec2017                         a CEC protocol's
+//   tables and files (results/analysis/cec_protocol.hpp) plugins = /path/mine.so                    plug-in
+//   modules naming components (runner/plugin_loader.hpp)
 //
 // `#` starts a comment; a UTF-8 byte-order mark is skipped. Every error names the file and the
 // line. Threads and the output directory are deliberately absent: they do not change results,

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 
 namespace mhb {
 

@@ -10,7 +10,7 @@
 #include "problems/core/parameters.hpp"
 #include "problems/core/spec_grid.hpp"
 #include "problems/core/text_excerpt.hpp"
-#include "results/cec_protocol.hpp"
+#include "results/analysis/cec_protocol.hpp"
 
 namespace mhb {
 namespace po = boost::program_options;

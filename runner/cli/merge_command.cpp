@@ -10,9 +10,9 @@
 #include <optional>
 #include <sstream>
 
-#include "results/csv.hpp"
-#include "results/report.hpp"
-#include "results/store.hpp"
+#include "results/report/report.hpp"
+#include "results/store/csv.hpp"
+#include "results/store/store.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/components.hpp"

@@ -11,9 +11,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "results/html_report.hpp"
-#include "results/report.hpp"
-#include "results/store.hpp"
+#include "results/html/html_report.hpp"
+#include "results/report/report.hpp"
+#include "results/store/store.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/study_lock.hpp"

@@ -13,7 +13,7 @@
 #include "problems/core/text_excerpt.hpp"
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/drive_simulator.hpp"
-#include "results/csv.hpp"
+#include "results/store/csv.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 

@@ -12,7 +12,7 @@
 #include <oneapi/tbb/task_arena.h>
 #include <vector>
 
-#include "results/run_record.hpp"
+#include "results/store/run_record.hpp"
 #include "runner/study.hpp"
 
 namespace mhb {

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "results/record_codec.hpp"
+#include "results/store/record_codec.hpp"
 
 namespace mhb::mpi {
 namespace {

@@ -1,6 +1,6 @@
 // The messages of the distributed runner (runner/mpi/mpi_runner.hpp) and the non-blocking way
 // they are sent and received. Every payload is bytes in the record codec's format
-// (results/record_codec.hpp), so a record crosses exactly and malformed bytes throw.
+// (results/store/record_codec.hpp), so a record crosses exactly and malformed bytes throw.
 //
 //   from another rank to rank 0        from rank 0 to another rank
 //   request  u64 runs wanted           assign   the run ids given (none: no more runs, ever)

@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "results/record_codec.hpp"
+#include "results/store/record_codec.hpp"
 #include "runner/mpi/local_runs.hpp"
 #include "runner/mpi/mpi_messages.hpp"
 #include "runner/shards.hpp"

@@ -7,7 +7,7 @@
 // never waits for an answer). Rank 0 is the one writer: it journals each record the moment it
 // arrives, so a rank that dies loses only the runs it held, and the same command resumes.
 // Records are byte-identical to a one-process run: a run's record depends on its run id alone,
-// records travel exactly (results/record_codec.hpp), and the writer sorts by run id.
+// records travel exactly (results/store/record_codec.hpp), and the writer sorts by run id.
 //
 // Only the thread that created the MpiSession calls MPI. Each rank's communication loop polls
 // (MPI_Iprobe, MPI_Test) and sleeps between polls, from 50 us up to 1 ms when nothing happens:
@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/mpi/mpi_session.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/study.hpp"

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <sstream>
 
-#include "results/hypothesis_tests.hpp"
-#include "results/report.hpp"
-#include "results/store.hpp"
+#include "results/analysis/hypothesis_tests.hpp"
+#include "results/report/report.hpp"
+#include "results/store/store.hpp"
 
 namespace {
 namespace fs = std::filesystem;

@@ -17,7 +17,7 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <string>
 
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/execute_run.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/run_identity.hpp"

@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <string>
 
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"

@@ -9,8 +9,8 @@
 #include <map>
 
 #include "cli_harness.hpp"
-#include "results/csv.hpp"
-#include "results/report.hpp"
+#include "results/report/report.hpp"
+#include "results/store/csv.hpp"
 
 namespace {
 namespace fs = std::filesystem;

@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "cli_harness.hpp"
-#include "results/csv.hpp"
+#include "results/store/csv.hpp"
 
 namespace {
 namespace fs = std::filesystem;

@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "algorithms/algorithm_registry.hpp"
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"

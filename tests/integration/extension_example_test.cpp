@@ -13,7 +13,7 @@
 #include "cli_harness.hpp"
 #include "plugin_example/booth_components.hpp"
 #include "problems/problem_registry.hpp"
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"

@@ -7,7 +7,7 @@
 #include <map>
 
 #include "cli_harness.hpp"
-#include "results/csv.hpp"
+#include "results/store/csv.hpp"
 
 namespace {
 namespace fs = std::filesystem;

@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 #include "cli_harness.hpp"
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 
 namespace mhb {
 namespace {

@@ -10,9 +10,9 @@
 #include <unistd.h>
 
 #include "cli_harness.hpp"
-#include "results/csv.hpp"
-#include "results/report.hpp"
-#include "results/store.hpp"
+#include "results/report/report.hpp"
+#include "results/store/csv.hpp"
+#include "results/store/store.hpp"
 #include "support/text.hpp"
 
 namespace mhb {

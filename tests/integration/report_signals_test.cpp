@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "cli_harness.hpp"
-#include "results/report.hpp"
-#include "results/store.hpp"
+#include "results/report/report.hpp"
+#include "results/store/store.hpp"
 #include "support/files.hpp"
 #include "support/processes.hpp"
 

@@ -15,7 +15,7 @@
 #include <unistd.h>
 #include <vector>
 
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/mpi/mpi_runner.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/shards.hpp"

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "problems/problem_registry.hpp"
-#include "results/csv.hpp"
+#include "results/store/csv.hpp"
 
 namespace mhb {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "problems/cec/cec_function.hpp"
 #include "problems/problem_registry.hpp"
-#include "results/csv.hpp"
+#include "results/store/csv.hpp"
 
 namespace mhb {
 namespace {

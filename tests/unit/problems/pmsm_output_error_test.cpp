@@ -16,7 +16,7 @@
 #include "problems/pmsm/drive_simulator.hpp"
 #include "problems/pmsm/output_error.hpp"
 #include "problems/pmsm/output_error_problem.hpp"
-#include "results/csv.hpp"
+#include "results/store/csv.hpp"
 
 namespace mhb::pmsm {
 namespace {

@@ -8,9 +8,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "results/cec_protocol.hpp"
-#include "results/cec_result_files.hpp"
-#include "results/dimension_budget.hpp"
+#include "results/analysis/cec_protocol.hpp"
+#include "results/analysis/dimension_budget.hpp"
+#include "results/exports/cec_result_files.hpp"
 
 namespace mhb {
 namespace {

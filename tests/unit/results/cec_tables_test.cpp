@@ -8,10 +8,10 @@
 #include <gtest/gtest.h>
 #include <sstream>
 
-#include "results/cec_tables.hpp"
-#include "results/csv.hpp"
-#include "results/report.hpp"
-#include "results/study_index.hpp"
+#include "results/report/report.hpp"
+#include "results/store/csv.hpp"
+#include "results/store/study_index.hpp"
+#include "results/tables/cec_tables.hpp"
 #include "support/files.hpp"
 
 namespace mhb {

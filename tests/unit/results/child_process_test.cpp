@@ -1,4 +1,4 @@
-// run_child_process (results/child_process.hpp): arguments reach the program exactly as given, with
+// run_child_process (results/report/child_process.hpp): arguments reach the program exactly as given, with
 // no shell between; the child inherits no descriptor but 0, 1 and 2; a stop signal that reaches
 // this process while it waits is passed on and reported; and the child dies with its parent, even
 // when the parent is killed with SIGKILL.
@@ -13,7 +13,7 @@
 #include <unistd.h>
 #include <vector>
 
-#include "results/child_process.hpp"
+#include "results/report/child_process.hpp"
 #include "support/processes.hpp"
 
 namespace mhb {

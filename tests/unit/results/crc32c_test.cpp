@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 #include <string>
 
-#include "results/crc32c.hpp"
+#include "results/store/crc32c.hpp"
 
 namespace mhb {
 namespace {

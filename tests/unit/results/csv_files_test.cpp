@@ -1,4 +1,4 @@
-// write_file_atomically and read_whole_file (results/csv.hpp): a failure says the OS's reason and
+// write_file_atomically and read_whole_file (results/store/csv.hpp): a failure says the OS's reason and
 // leaves nothing behind (no .tmp, the old file intact); devices are written in place. The tests
 // run as root in CI, where permissions are no obstacle, so failures are provoked by paths the OS
 // refuses to anyone (a path under a regular file, a directory, /sys, /dev/full).
@@ -10,7 +10,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "results/csv.hpp"
+#include "results/store/csv.hpp"
 
 namespace mhb {
 namespace {

@@ -15,9 +15,9 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/problem_registry.hpp"
-#include "results/csv.hpp"
-#include "results/curve_data.hpp"
-#include "results/statistics.hpp"
+#include "results/analysis/curve_data.hpp"
+#include "results/analysis/statistics.hpp"
+#include "results/store/csv.hpp"
 #include "runner/execute_run.hpp"
 
 namespace mhb {

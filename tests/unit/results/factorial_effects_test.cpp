@@ -5,8 +5,9 @@
 #include <gtest/gtest.h>
 #include <limits>
 
-#include "results/factorial_effects.hpp"
-#include "results/study_index.hpp"
+#include "results/analysis/factorial_effects.hpp"
+#include "results/store/study_index.hpp"
+#include "results/tables/effects_table.hpp"
 
 namespace mhb {
 namespace {

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "results/html_escape.hpp"
-#include "results/html_report.hpp"
-#include "results/report.hpp"
-#include "results/store.hpp"
+#include "results/html/html_escape.hpp"
+#include "results/html/html_report.hpp"
+#include "results/report/report.hpp"
+#include "results/store/store.hpp"
 #include "support/files.hpp"
 
 namespace mhb {

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "results/html_svg.hpp"
+#include "results/html/html_svg.hpp"
 
 namespace mhb {
 namespace {

@@ -3,8 +3,8 @@
 #include <limits>
 #include <string>
 
-#include "results/html_escape.hpp"
-#include "results/html_table.hpp"
+#include "results/html/html_escape.hpp"
+#include "results/html/html_table.hpp"
 
 namespace mhb {
 namespace {

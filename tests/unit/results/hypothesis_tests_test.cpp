@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <stdexcept>
 
-#include "results/hypothesis_tests.hpp"
+#include "results/analysis/hypothesis_tests.hpp"
 
 namespace mhb {
 namespace {

@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "results/ioh_export.hpp"
+#include "results/exports/ioh_export.hpp"
 
 namespace mhb {
 namespace {

@@ -15,8 +15,8 @@
 #include <string_view>
 
 #include "problems/problem_registry.hpp"
-#include "results/csv.hpp"
-#include "results/ioh_export.hpp"
+#include "results/exports/ioh_export.hpp"
+#include "results/store/csv.hpp"
 #include "runner/execute_run.hpp"
 
 namespace mhb {

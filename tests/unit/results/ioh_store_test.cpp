@@ -8,10 +8,10 @@
 #include <limits>
 #include <sstream>
 
-#include "results/csv.hpp"
-#include "results/ioh_export.hpp"
-#include "results/record_codec.hpp"
-#include "results/store.hpp"
+#include "results/exports/ioh_export.hpp"
+#include "results/store/csv.hpp"
+#include "results/store/record_codec.hpp"
+#include "results/store/store.hpp"
 
 namespace mhb {
 namespace {

@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "results/comparison_tables.hpp"
-#include "results/study_index.hpp"
+#include "results/store/study_index.hpp"
+#include "results/tables/comparison_tables.hpp"
+#include "results/text/csv_table.hpp"
+#include "results/text/markdown_table.hpp"
 
 namespace mhb {
 namespace {

@@ -11,9 +11,10 @@
 #include <limits>
 #include <sstream>
 
-#include "results/latex_text.hpp"
-#include "results/report.hpp"
-#include "results/table.hpp"
+#include "results/latex/latex_table.hpp"
+#include "results/latex/latex_text.hpp"
+#include "results/report/report.hpp"
+#include "results/table_model/table.hpp"
 #include "support/files.hpp"
 
 namespace mhb {

@@ -1,12 +1,15 @@
-// One format per table column (results/latex_numbers.hpp): the same significant digits with
+// One format per table column (results/latex/latex_numbers.hpp): the same significant digits with
 // trailing zeros kept, scientific notation for a column spanning many decades, true minus signs,
 // inf and the em dash, and LaTeX padding that lines every decimal point up in a plain `r` column.
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
 
-#include "results/latex_numbers.hpp"
-#include "results/table.hpp"
+#include "results/latex/latex_numbers.hpp"
+#include "results/table_model/number_format.hpp"
+#include "results/table_model/table.hpp"
+#include "results/text/csv_table.hpp"
+#include "results/text/markdown_table.hpp"
 
 namespace mhb {
 namespace {

@@ -9,9 +9,9 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "results/csv.hpp"
-#include "results/report.hpp"
-#include "results/study_index.hpp"
+#include "results/report/report.hpp"
+#include "results/store/csv.hpp"
+#include "results/store/study_index.hpp"
 #include "support/files.hpp"
 
 namespace mhb {

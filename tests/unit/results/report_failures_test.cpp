@@ -13,12 +13,15 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "results/csv.hpp"
-#include "results/hypothesis_tests.hpp"
-#include "results/report.hpp"
-#include "results/statistics.hpp"
-#include "results/study_index.hpp"
-#include "results/table.hpp"
+#include "results/analysis/hypothesis_tests.hpp"
+#include "results/analysis/statistics.hpp"
+#include "results/latex/latex_table.hpp"
+#include "results/report/report.hpp"
+#include "results/store/csv.hpp"
+#include "results/store/study_index.hpp"
+#include "results/table_model/table.hpp"
+#include "results/text/csv_table.hpp"
+#include "results/text/markdown_table.hpp"
 #include "support/files.hpp"
 #include "support/text.hpp"
 

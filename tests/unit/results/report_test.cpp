@@ -12,10 +12,10 @@
 #include <stdexcept>
 #include <unistd.h>
 
-#include "results/critical_difference.hpp"
-#include "results/csv.hpp"
-#include "results/report.hpp"
-#include "results/store.hpp"
+#include "results/analysis/critical_difference.hpp"
+#include "results/report/report.hpp"
+#include "results/store/csv.hpp"
+#include "results/store/store.hpp"
 #include "support/files.hpp"
 
 namespace mhb {

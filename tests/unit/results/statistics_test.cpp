@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 #include <stdexcept>
 
-#include "results/statistics.hpp"
+#include "results/analysis/statistics.hpp"
 
 namespace mhb {
 namespace {

@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 #include <span>
 
-#include "results/csv.hpp"
-#include "results/record_codec.hpp"
-#include "results/store.hpp"
+#include "results/store/csv.hpp"
+#include "results/store/record_codec.hpp"
+#include "results/store/store.hpp"
 
 namespace mhb {
 namespace {

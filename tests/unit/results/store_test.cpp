@@ -4,8 +4,8 @@
 #include <fstream>
 #include <gtest/gtest.h>
 
-#include "results/csv.hpp"
-#include "results/store.hpp"
+#include "results/store/csv.hpp"
+#include "results/store/store.hpp"
 
 namespace mhb {
 namespace {

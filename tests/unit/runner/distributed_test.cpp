@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/distributed.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"

@@ -16,7 +16,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/problem_registry.hpp"
-#include "results/csv.hpp"
+#include "results/store/csv.hpp"
 #include "runner/execute_run.hpp"
 #include "runner/study.hpp"
 

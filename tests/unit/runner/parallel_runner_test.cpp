@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <sstream>
 
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/parallel_runner.hpp"
 #include "runner/study.hpp"
 #include "runner/study_file.hpp"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "results/record_codec.hpp"
+#include "results/store/record_codec.hpp"
 
 namespace mhb {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "problems/core/sha256.hpp"
-#include "results/store.hpp"
+#include "results/store/store.hpp"
 #include "runner/execute_run.hpp"
 #include "runner/run_identity.hpp"
 #include "runner/study.hpp"

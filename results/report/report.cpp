@@ -1,0 +1,452 @@
+#include "results/report/report.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <stdexcept>
+#include <sys/wait.h>
+
+#include "results/analysis/cec_protocol.hpp"
+#include "results/analysis/critical_difference.hpp"
+#include "results/analysis/curve_data.hpp"
+#include "results/analysis/factorial_effects.hpp"
+#include "results/exports/cec_result_files.hpp"
+#include "results/exports/ioh_export.hpp"
+#include "results/html/html_report.hpp"
+#include "results/latex/latex_document.hpp"
+#include "results/latex/latex_table.hpp"
+#include "results/report/child_process.hpp"
+#include "results/report/report_readme.hpp"
+#include "results/store/csv.hpp"
+#include "results/store/study_index.hpp"
+#include "results/table_model/table.hpp"
+#include "results/tables/cec_tables.hpp"
+#include "results/tables/comparison_tables.hpp"
+#include "results/tables/effects_table.hpp"
+#include "results/tables/paper_tables.hpp"
+#include "results/text/csv_table.hpp"
+#include "results/text/markdown_table.hpp"
+
+namespace mhb {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// As typed in a shell: as it is when that is safe, else single-quoted (a quote inside becomes '\'').
+std::string shell_quote(const std::string& text) {
+    if (!text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                "0123456789_-+=.,:/@%") == std::string::npos)
+        return text;
+    std::string out = "'";
+    for (char c : text)
+        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+void check_options(const ReportOptions& options) {
+    if (!(options.alpha > 0.0 && options.alpha < 1.0))
+        throw std::invalid_argument("--alpha = " + format_number(options.alpha) + " is outside (0, 1)");
+    if (options.formats.empty())
+        throw std::invalid_argument("--format: choose at least one of md, tex, csv");
+    for (const auto& f : options.formats)
+        if (f != "md" && f != "tex" && f != "csv")
+            throw std::invalid_argument("--format: '" + (f.size() > 40 ? f.substr(0, 37) + "..." : f) +
+                                        "' is not one of md, tex, csv");
+    if (options.errors == nullptr)
+        throw std::logic_error("ReportOptions::errors is null");
+}
+
+std::vector<std::string> non_empty_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        std::string line = text.substr(start, end - start);
+        if (line.find_first_not_of(" \t\r") != std::string::npos)
+            lines.push_back(std::move(line));
+        start = end + 1;
+    }
+    return lines;
+}
+
+// The first candidate that can import matplotlib; `interrupted` when a stop came meanwhile.
+std::optional<std::string> find_python(const std::vector<std::string>& candidates, bool& interrupted) {
+    interrupted = false;
+    for (const auto& python : candidates) {
+        const ChildOutcome probe = run_child_process(python, {"-c", "import matplotlib"}, false);
+        if (probe.stop_requested) {
+            interrupted = true;
+            return std::nullopt;
+        }
+        if (probe.exited_with(0))
+            return python;
+    }
+    return std::nullopt;
+}
+
+// The exit status plot_study.py gives when SIGINT or SIGTERM stopped it (as a shell reports Ctrl-C).
+constexpr int plot_exit_interrupted = 130;
+
+enum class Figures { drawn_or_skipped, interrupted };
+
+// `note` gets what the HTML page must say about the figures (skipped, failed), empty when all went well.
+Figures draw_figures(const ReportOptions& options, const fs::path& out_dir, std::ostream& console,
+                     std::string& note) {
+    note.clear();
+    if (options.stop != nullptr && options.stop->load())
+        return Figures::interrupted;
+    const std::string how =
+        "install matplotlib (apt install python3-matplotlib) and run mhbench report again, or "
+        "run scripts/plot_study.py " +
+        out_dir.string();
+    if (options.plot_script.empty() || !fs::exists(options.plot_script)) {
+        console << "figures skipped: the plotting script " << options.plot_script.string()
+                << " was not found; the tables and curve data are written\n";
+        note = "figures skipped: the plotting script " + options.plot_script.string() + " was not found";
+        return Figures::drawn_or_skipped;
+    }
+    bool interrupted = false;
+    const auto python = find_python(options.python_candidates, interrupted);
+    if (interrupted)
+        return Figures::interrupted;
+    if (!python) {
+        console << "figures skipped: no Python with matplotlib found; " << how << '\n';
+        note = "figures skipped: no Python with matplotlib found; " + how;
+        return Figures::drawn_or_skipped;
+    }
+    // The script's output is collected, not passed through: its notes (what a figure left out) go to
+    // the console, a figure that failed is one line on `errors`, and a traceback stays in a log.
+    const fs::path figures = out_dir / "figures";
+    std::error_code ec;
+    fs::create_directories(figures, ec);
+    const fs::path log_file = figures / "plot_study.log";
+    const ChildOutcome run =
+        run_child_process(*python, {options.plot_script.string(), out_dir.string()}, true);
+    fs::remove(log_file, ec); // a stale log from an earlier report would mislead
+    if (run.stop_requested || run.exited_with(plot_exit_interrupted))
+        return Figures::interrupted; // the figures drawn so far are whole; the next report redraws all
+    const bool succeeded = run.exited_with(0);
+    for (const auto& line : non_empty_lines(run.out))
+        console << line << '\n';
+    if (!succeeded || !run.err.empty()) // keep everything the script said, traceback included
+        write_file_atomically(log_file, run.started ? run.out + run.err : run.error + '\n');
+    std::ostream& errors = *options.errors;
+    if (!succeeded) {
+        const auto lines = non_empty_lines(run.err.empty() ? run.out : run.err);
+        std::string reason = lines.empty() ? std::string("no output") : lines.back();
+        if (!run.started)
+            reason = "the plotting script did not finish (could not start: " + run.error + ")";
+        else if (!WIFEXITED(run.status))
+            reason = "the plotting script did not finish (" +
+                     (WIFSIGNALED(run.status) ? "signal " + std::to_string(WTERMSIG(run.status))
+                                              : std::string("status ") + std::to_string(run.status)) +
+                     ")";
+        errors << "figures failed: " << reason << " (full output: " << log_file.string()
+               << "); the tables and curve data are written\n";
+        note = "figures failed: " + reason + " (full output: figures/plot_study.log)";
+        return Figures::drawn_or_skipped;
+    }
+    const auto failures = non_empty_lines(run.err);
+    for (const auto& line : failures) // the script's one line per figure that failed
+        errors << "figures: " << line << '\n';
+    if (!failures.empty())
+        note = "some figures could not be drawn (" + failures.front() + (failures.size() > 1 ? ", ..." : "") +
+               ")";
+    console << "figures: " << figures.string() << '\n';
+    return Figures::drawn_or_skipped;
+}
+
+} // namespace
+
+std::optional<std::string> find_matplotlib_python(const std::vector<std::string>& candidates) {
+    bool interrupted = false;
+    return find_python(candidates, interrupted);
+}
+
+namespace {
+
+// The tables of one budget, titled and captioned with it when it is known.
+std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOptions& comparison,
+                                 const std::vector<DesignEffects>& designs,
+                                 const std::vector<DesignCandidate>& rejected, bool list_algorithms,
+                                 const CecProtocol* protocol) {
+    std::vector<Table> tables;
+    if (list_algorithms) {
+        Table t;
+        t.id = "algorithms";
+        t.title = "Algorithms";
+        t.header = {"Label", "Spec", "Full spec"};
+        for (const auto& a : index.algorithms())
+            t.add_row({text_cell(index.label(a)), text_cell(a), text_cell(index.full_spec(a))});
+        t.caption =
+            "The label names the algorithm in every table and figure; the spec is canonical (defaults "
+            "dropped), the full spec lists every parameter with its value, defaults included.";
+        tables.push_back(std::move(t));
+    }
+    for (auto& t : pmsm_paper_tables(index))
+        tables.push_back(std::move(t));
+    for (auto& t : comparison_tables(index, comparison))
+        tables.push_back(std::move(t));
+    if (protocol != nullptr) // the competition's tables, per dimension
+        for (auto& t : cec_tables(index, *protocol, comparison.reference, comparison.alpha))
+            tables.push_back(std::move(t));
+    if (auto effects = effects_table(designs, rejected, comparison.alpha))
+        tables.push_back(std::move(*effects));
+    if (!index.budget().empty())
+        for (auto& t : tables) {
+            t.title += " [budget " + index.budget() + "]";
+            t.caption += " Budget: " + index.budget() + ".";
+        }
+    return tables;
+}
+
+// The reference of one budget: the requested one if that budget ran it, else the default there.
+std::string budget_reference(const StudyIndex& index, const ReportOptions& options, std::ostream& console) {
+    if (options.reference) {
+        try {
+            return resolve_reference(index, options.reference);
+        } catch (const std::invalid_argument&) {
+            const std::string fallback = resolve_reference(index, std::nullopt);
+            console << "budget " << index.budget() << ": --reference " << *options.reference
+                    << " did not run at this budget; reference " << fallback << " instead\n";
+            return fallback;
+        }
+    }
+    return resolve_reference(index, std::nullopt);
+}
+
+void write_tables(const std::vector<Table>& tables, const fs::path& dir, const ReportOptions& options,
+                  std::ostream& console, std::string& all_markdown) {
+    for (const auto& t : tables) {
+        const std::string markdown = render_markdown(t);
+        console << markdown << '\n';
+        all_markdown += markdown + '\n';
+        if (options.formats.count("md"))
+            write_file_atomically(dir / (t.id + ".md"), markdown);
+        if (options.formats.count("tex"))
+            write_file_atomically(dir / (t.id + ".tex"), render_latex(t));
+        if (options.formats.count("csv"))
+            write_file_atomically(dir / (t.id + ".csv"), render_csv(t));
+    }
+}
+
+void make_report_directory(const fs::path& dir) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir))
+        throw std::runtime_error(dir.string() + ": cannot create the report directory");
+}
+
+// Everything of one budget in `dir`: tables, curve data, effects, IOH export, and the figures
+// unless `figures` is false. Returns the tables (for the combined report.md and report.tex); sets
+// `figures` to false when they were interrupted. `html` gets the budget's section of index.html.
+std::vector<Table> write_budget_report(const StudyData& study, const std::string& budget, const fs::path& dir,
+                                       const std::string& heading, const ReportOptions& options,
+                                       std::ostream& console, std::string& all_markdown, bool& figures,
+                                       HtmlBudgetSection& html) {
+    make_report_directory(dir);
+    const StudyIndex index(study, budget);
+    ComparisonOptions comparison;
+    comparison.reference = budget_reference(index, options, console);
+    comparison.alpha = options.alpha;
+
+    std::vector<DesignEffects> designs;
+    std::vector<DesignCandidate> rejected;
+    for (auto& candidate : find_factorial_designs(index)) {
+        if (!candidate.design) {
+            rejected.push_back(std::move(candidate));
+            continue;
+        }
+        DesignEffects effects{*candidate.design, factorial_effects(index, *candidate.design, options.alpha)};
+        if (!effects.analyses.empty())
+            designs.push_back(std::move(effects));
+    }
+
+    const auto count = [](std::size_t n, const char* noun) {
+        return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+    };
+    std::size_t runs = 0;
+    for (const auto& r : study.runs)
+        runs += r.budget == budget ? 1U : 0U;
+    console << heading << count(runs, "run") << " (" << index.failed_runs() << " failed), "
+            << count(index.problems().size(), "problem") << ", "
+            << count(index.algorithms().size(), "algorithm") << "; reference "
+            << index.label(comparison.reference) << '\n';
+    if (!index.failed().empty()) {
+        const RunRecord& first = *index.failed().front();
+        console << count(index.failed().size(), "failed run")
+                << " left out (first: " << run_name(index, first) << ": "
+                << (first.message.empty() ? std::string("no message") : first.message) << ")\n";
+    }
+    if (index.infinite_runs() > 0)
+        console << count(index.infinite_runs(), "run") << " ended at "
+                << (index.negative_infinite_runs() == 0 ? "+inf" : "+inf or -inf")
+                << ": the worst value in medians and rank tests, inf in means\n";
+    for (const auto& d : designs)
+        console << "factorial design " << d.design.description() << ": effects in effects.csv\n";
+    for (const auto& r : rejected)
+        console << "no factorial analysis of " << r.name << ": " << r.why_not << '\n';
+    // A study that follows a CEC protocol (`protocol = cec2017` in study.ini) gets its tables and the
+    // organisers' result files.
+    const std::optional<std::string> protocol_name = study_protocol(study.study_text);
+    const CecProtocol* protocol = protocol_name ? find_cec_protocol(*protocol_name) : nullptr;
+    if (protocol_name && protocol == nullptr)
+        console << "protocol '" << *protocol_name << "' is not one this mhbench knows ("
+                << cec_protocol_names() << "): its tables and result files are not written\n";
+    console << '\n';
+
+    const std::vector<Table> tables =
+        budget_tables(index, comparison, designs, rejected, !study.algorithms.empty(), protocol);
+    write_tables(tables, dir, options, console, all_markdown);
+
+    std::error_code ec;
+    const auto write_or_remove = [&](const fs::path& path, const std::optional<std::string>& content) {
+        if (content)
+            write_file_atomically(path, *content);
+        else
+            fs::remove(path, ec); // a stale one from an earlier report would mislead
+    };
+    write_or_remove(dir / "budget.txt",
+                    budget.empty() ? std::nullopt : std::optional<std::string>(budget + "\n"));
+    write_file_atomically(dir / "curves_iteration.csv", fitness_curves_by_iteration(index));
+    write_file_atomically(dir / "curves_evaluations.csv", fitness_curves_by_evaluations(index));
+    write_file_atomically(dir / "parameters_iteration.csv", parameter_curves_by_iteration(index));
+    write_file_atomically(dir / "final_values.csv", final_values(index));
+    write_file_atomically(dir / "target_hits.csv", target_hits(index));
+    const std::optional<std::string> critical_difference = critical_difference_data(index, options.alpha);
+    write_or_remove(dir / "critical_difference.csv", critical_difference);
+    write_or_remove(dir / "effect_means.csv",
+                    designs.empty() ? std::nullopt : std::optional<std::string>(effect_means_csv(designs)));
+    if (designs.empty()) // no effects table: stale copies from an earlier report would mislead
+        for (const char* ext : {".md", ".tex", ".csv"})
+            fs::remove(dir / (std::string("effects") + ext), ec);
+    if (protocol != nullptr) {
+        const CecFilesSummary cec = write_cec_result_files(index, *protocol, dir / "cec");
+        console << protocol->title << " result files (" << cec.files
+                << ", the organisers' layout; see README there): " << (dir / "cec").string() << '\n';
+        if (cec.failed_runs > 0)
+            console << protocol->title << " result files: " << count(cec.failed_runs, "failed run")
+                    << " left out\n";
+    } else if (fs::exists(dir / "cec" / "README")) {
+        fs::remove_all(dir / "cec", ec); // from a report of the study when it followed a protocol
+    }
+    const IohExportSummary ioh = write_ioh_export(index, dir / "ioh", options.ioh_precision);
+    console << "tables and curve data: " << dir.string() << '\n';
+    if (ioh.files > 0)
+        console << "IOHprofiler export (" << ioh.files
+                << " files, load the folder in IOHanalyzer): " << (dir / "ioh").string() << '\n';
+    else
+        console << "IOHprofiler export: no run has a finite value to export\n";
+    if (ioh.runs_left_out > 0)
+        console << "IOHprofiler export: left out " << count(ioh.runs_left_out, "run")
+                << " that ended at +inf (no improvement to log, as IOHexperimenter would log none)\n";
+    if (ioh.none_values > 0)
+        console << "IOHprofiler export: " << count(ioh.none_values, "infinite value")
+                << " written None, as IOHexperimenter writes them\n";
+    if (ioh.approximate_runs > 0)
+        console << "IOHprofiler export: " << count(ioh.approximate_runs, "run")
+                << " stored before mhbench recorded improvements: rows where the trace recorded them, not at "
+                   "each improvement (approximate; run the study again with --overwrite for exact rows)\n";
+    ReportFiles files;
+    files.formats.assign(options.formats.begin(), options.formats.end());
+    files.critical_difference = critical_difference.has_value();
+    files.effect_means = !designs.empty();
+    files.cec = protocol != nullptr;
+    files.ioh = ioh.files > 0;
+    files.budget_txt = !budget.empty();
+    files.combined = html.folder.empty(); // no folder of its own: this budget is the whole report
+    html.budget = budget;
+    html.directory = dir;
+    html.tables = tables;
+    html.figures_current = figures;
+    if (figures && draw_figures(options, dir, console, html.figures_note) == Figures::interrupted)
+        figures = false;
+    if (!figures) {
+        html.figures_current = false;
+        html.figures_note = options.figures
+                                ? "the figures were interrupted; run mhbench report on the study to "
+                                  "draw them"
+                                : "the figures were not drawn (--no-figures)";
+    }
+    files.figures = fs::exists(dir / "figures");
+    write_file_atomically(dir / "README.md", report_readme(tables, files));
+    return tables;
+}
+
+} // namespace
+
+ReportOutcome build_report(const StudyData& study, const ReportOptions& options, std::ostream& console) {
+    check_options(options);
+    const fs::path out_dir = options.out_dir.empty() ? study.directory / "report" : options.out_dir;
+    make_report_directory(out_dir);
+    std::vector<std::string> budgets = study_budgets(study);
+    if (budgets.empty())
+        throw std::invalid_argument("the study has no runs");
+    if (options.reference) { // an error for a reference no budget ran, as before budgets existed
+        StudyData all = study;
+        for (auto& r : all.runs)
+            r.budget.clear();
+        (void)resolve_reference(StudyIndex(all), options.reference);
+    }
+
+    const std::string heading = "mhbench report of " + study.directory.string() + ": ";
+    if (budgets.size() > 1)
+        console << heading << budgets.size() << " budgets, each reported in its own folder\n";
+    // The context (version, commit, compiler, threads, date) heads the combined report, so a table
+    // read later says what produced it.
+    std::string all_markdown = "# mhbench report: " + study.directory.string() +
+                               "\n\nStudy context (context.ini):\n\n```\n" + study.context_text +
+                               (study.context_text.empty() || study.context_text.back() == '\n' ? "" : "\n") +
+                               "```\n\n";
+    std::vector<LatexSection> latex; // report.tex: a section per budget when there are several
+    // Interrupted figures end the figures, not the report: the tables of every budget are still
+    // written (they take little time), so that only the figures are left for `mhbench report`.
+    bool figures = options.figures;
+    std::vector<HtmlBudgetSection> html; // the sections of index.html, one per budget
+    if (budgets.size() == 1) {
+        latex.push_back({"", write_budget_report(study, budgets.front(), out_dir, heading, options, console,
+                                                 all_markdown, figures, html.emplace_back())});
+    } else {
+        // Several budgets: one complete report per budget in <out>/<budget slug>/, the combined
+        // report.md / report.tex and budgets.csv (budget,directory) on top.
+        std::string index_csv = "budget,directory\n";
+        std::vector<std::string> folders;
+        for (const auto& budget : budgets) {
+            const std::string slug = folders.emplace_back(budget_slug(budget));
+            index_csv += csv_field(budget) + ',' + csv_field(slug) + '\n';
+            all_markdown += "## Budget " + (budget.empty() ? std::string("unspecified") : budget) + " (" +
+                            slug + "/)\n\n";
+            html.emplace_back().folder = slug;
+            LatexSection& section = latex.emplace_back();
+            section.heading = "Budget " + (budget.empty() ? std::string("unspecified") : budget);
+            for (auto& t : write_budget_report(study, budget, out_dir / slug, "budget " + budget + ": ",
+                                               options, console, all_markdown, figures, html.back())) {
+                t.id = slug + "_" + t.id; // one LaTeX label per table in the combined report.tex
+                section.tables.push_back(std::move(t));
+            }
+        }
+        write_file_atomically(out_dir / "budgets.csv", index_csv);
+        write_file_atomically(out_dir / "README.md", budgets_readme(budgets, folders));
+    }
+    if (options.formats.count("md"))
+        write_file_atomically(out_dir / "report.md", all_markdown);
+    if (options.formats.count("tex"))
+        write_file_atomically(out_dir / "report.tex",
+                              latex_document(study.directory.string(), study.context_text, latex));
+    ReportOutcome outcome;
+    // The page is rebuilt by every report, from the tables above and whatever figures/*.svg hold.
+    outcome.html = write_html_report(
+        out_dir, {study.directory.string(), study.context_text, study.study_text, std::move(html)});
+    console << "HTML report (one self-contained page): " << outcome.html.string() << "\n  "
+            << file_url(outcome.html) << '\n';
+    outcome.interrupted = options.figures && !figures;
+    if (outcome.interrupted) {
+        std::string again = "mhbench report " + shell_quote(study.directory.string());
+        if (!options.out_dir.empty())
+            again += " --out " + shell_quote(options.out_dir.string());
+        *options.errors << "figures interrupted; run `" << again << "` to draw them\n";
+    }
+    return outcome;
+}
+
+} // namespace mhb
