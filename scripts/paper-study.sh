@@ -6,5 +6,6 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
-bash scripts/build.sh >&2
+# The CLI alone: the tests are built by the other quick-start command (scripts/run-tests.sh).
+bash scripts/build.sh mhbench >&2
 exec build/release/runner/mhbench run --study paper --out studies/paper --overwrite "$@"
