@@ -2,8 +2,9 @@
 //
 // Every table must fit the 345 pt text width of a one-column `article` (default geometry), in
 // \footnotesize with \tabcolsep = 4 pt (3 pt when that is what keeps it whole). The layout is decided
-// here, before TeX runs, from estimated widths (results/latex/latex_text.hpp, latex_numbers.hpp: within
-// a point or two of what pdflatex measures; only 96 % of the width is used):
+// before TeX runs (a file for each step: results/latex/latex_layout.hpp), from estimated widths
+// (results/latex/latex_text.hpp, latex_numbers.hpp: within a point or two of what pdflatex
+// measures; only 96 % of the width is used):
 //  1. a column whose every row holds the same value (LatexColumn::fold_constant: the problem of a
 //     one-problem study, the name of a test, f*) is said once in the notes, a column without any
 //     value is left out (the notes name it), and a LatexColumn::heading column (the problem of

@@ -1,5 +1,5 @@
 // Text for LaTeX: escaping, maths for the symbols our captions and headers use, and an estimate of
-// the width a text takes, which the table layout (results/latex/latex_table.cpp) needs before TeX runs.
+// the width a text takes, which the table layout (results/latex/latex_layout.hpp) needs before TeX runs.
 #pragma once
 
 #include <string>
