@@ -1,36 +1,21 @@
+// The competition's tables of a study that follows a CEC protocol (cec_tables.hpp): per dimension
+// the errors and the ranks, and the CEC 2017 score over the dimensions.
 #include "results/tables/cec_tables.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <numeric>
 #include <optional>
-#include <stdexcept>
 
-#include "results/analysis/dimension_budget.hpp"
 #include "results/analysis/hypothesis_tests.hpp"
 #include "results/analysis/statistics.hpp"
+#include "results/tables/cec_dimensions.hpp"
 #include "results/tables/comparison_tables.hpp"
+#include "results/tables/table_cells.hpp"
 
-namespace mhb {
+namespace mhb::tables {
 namespace {
-
-// One algorithm on one function: its runs, their errors after MaxFES, its trials as CEC 2022 ranks
-// them, and its marker against the reference ("" for the reference and where no test ran).
-struct Cell {
-    const RunGroup* group = nullptr;
-    std::vector<double> errors; // in the order of group->runs
-    std::vector<CecTrial> trials;
-    std::string marker;
-};
-
-// One dimension: its functions (problems, by number) and each function's cells by algorithm spec.
-struct Dimension {
-    std::int64_t dimension = 0;
-    std::vector<CecProblem> functions;
-    std::vector<std::map<std::string, Cell>> cells;
-};
 
 // The CEC 2017 score's weight of each dimension (TR section 2.3).
 const std::map<std::int64_t, double>& score_weights() {
@@ -39,123 +24,22 @@ const std::map<std::int64_t, double>& score_weights() {
 }
 
 std::string function_name(int number) {
-    return std::string("F") + std::to_string(number);
+    // Appended, not "F" + ...: GCC 12 warns falsely (-Wrestrict) of that once inlined.
+    std::string name = "F";
+    return name.append(std::to_string(number));
 }
 
-// The markers of every algorithm but the reference on one function, decided as the comparison
-// tables decide theirs, but on the errors (so that errors below 1e-8 tie at 0).
-void add_markers(std::map<std::string, Cell>& cells, const std::string& reference, bool paired,
-                 std::int64_t max_fes, double alpha) {
-    const auto ref = cells.find(reference);
-    if (ref == cells.end())
-        return;
-    const Cell& y = ref->second;
-    std::vector<Cell*> compared;
-    std::vector<double> raw;
-    std::vector<TestResult> tests;
-    std::vector<std::size_t> nonzero;
-    std::vector<double> a12;
-    for (auto& [algorithm, cell] : cells) {
-        if (algorithm == reference)
-            continue;
-        compared.push_back(&cell);
-        a12.push_back(vargha_delaney_a12(cell.errors, y.errors));
-        if (!paired) {
-            tests.push_back(rank_sum_test(cell.errors, y.errors));
-            nonzero.push_back(0);
-        } else {
-            const PairedValues pairs = paired_values(
-                *cell.group, *y.group, [max_fes](const RunRecord& r) { return cec_error_at(r, max_fes); });
-            std::size_t differing = 0;
-            for (std::size_t i = 0; i < pairs.x.size(); ++i)
-                differing += pairs.x[i] != pairs.y[i] ? 1U : 0U;
-            tests.push_back(pairs.x.empty() ? TestResult{} : signed_rank_test(pairs.x, pairs.y));
-            nonzero.push_back(differing);
-        }
-        raw.push_back(tests.back().p_value);
-    }
-    const std::vector<double> adjusted = holm_adjust(raw);
-    for (std::size_t i = 0; i < compared.size(); ++i)
-        compared[i]->marker = paired ? signed_rank_marker(adjusted[i], tests[i], nonzero[i], alpha)
-                                     : comparison_marker(adjusted[i], a12[i], alpha);
-}
-
-std::vector<Dimension> by_dimension(const StudyIndex& index, const CecProtocol& protocol,
-                                    const std::string& reference, double alpha) {
-    std::vector<Dimension> out;
-    for (const auto& p : cec_problems(index, protocol)) {
-        if (out.empty() || out.back().dimension != p.dimension)
-            out.push_back({p.dimension, {}, {}});
-        std::map<std::string, Cell> cells;
-        for (const auto& a : index.algorithms_on(p.problem)) {
-            Cell cell;
-            cell.group = index.find(p.problem, a);
-            for (const auto* r : cell.group->runs) {
-                const double error = cec_error_at(*r, p.max_fes);
-                const std::int64_t termination = cec_termination_evaluations(*r, p.max_fes);
-                cell.errors.push_back(error);
-                cell.trials.push_back({error == 0.0 || termination < p.max_fes, termination, error});
-            }
-            cells[a] = std::move(cell);
-        }
-        add_markers(cells, reference, index.paired(p.problem), p.max_fes, alpha);
-        out.back().functions.push_back(p);
-        out.back().cells.push_back(std::move(cells));
-    }
-    return out;
-}
-
-// How the study departs from the protocol at this dimension, as a sentence ("" when it does not).
-std::string deviation_note(const CecProtocol& protocol, const Dimension& d) {
-    std::size_t least = SIZE_MAX;
-    std::size_t most = 0;
-    for (const auto& cells : d.cells)
-        for (const auto& [a, cell] : cells) {
-            least = std::min(least, cell.errors.size());
-            most = std::max(most, cell.errors.size());
-        }
-    std::int64_t max_fes = 0;
-    for (const auto& f : d.functions)
-        max_fes = std::max(max_fes, f.max_fes);
-    const std::optional<std::int64_t> asked =
-        DimensionEvaluations::parse(protocol.evaluations).at(d.dimension);
-    std::string study;
-    std::string protocol_asks;
-    const auto runs = static_cast<std::size_t>(protocol.runs);
-    if (most > 0 && (least != runs || most != runs)) {
-        study +=
-            (least == most ? std::to_string(most) : std::to_string(least) + " to " + std::to_string(most)) +
-            " runs";
-        protocol_asks += std::to_string(protocol.runs) + " runs";
-    }
-    if (!asked || *asked != max_fes) {
-        study += (study.empty() ? "" : " and ") + std::string("MaxFES = ") + std::to_string(max_fes);
-        protocol_asks +=
-            (protocol_asks.empty() ? "" : " and ") +
-            (asked ? "MaxFES = " + std::to_string(*asked)
-                   : "no dimension " + std::to_string(d.dimension) + " (it sets MaxFES at " +
-                         DimensionEvaluations::parse(protocol.evaluations).dimensions_text() + ")");
-    }
-    if (study.empty())
-        return "";
-    return " Not the protocol's size: this study has " + study + " at D = " + std::to_string(d.dimension) +
-           ", the " + std::string(protocol.title) + " protocol asks for " + protocol_asks + ".";
-}
+const MarkerTestsWording cec_tests_wording = {
+    .paired = "two-sided Wilcoxon signed-rank test of the paired differences (runs paired by seed)",
+    .paired_where = " where runs pair, ",
+    .unpaired = "two-sided Wilcoxon rank-sum test (Mann-Whitney U)",
+    .unpaired_where = " elsewhere",
+    .none = "none (no function has runs of the reference and another algorithm)"};
 
 std::string reference_text(const StudyIndex& index, const std::string& reference, double alpha,
                            bool paired_any, bool unpaired_any) {
-    std::string tests;
-    if (paired_any)
-        tests = "two-sided Wilcoxon signed-rank test of the paired differences (runs paired by seed)";
-    if (paired_any && unpaired_any)
-        tests += " where runs pair, ";
-    if (unpaired_any)
-        tests += "two-sided Wilcoxon rank-sum test (Mann-Whitney U)";
-    if (paired_any && unpaired_any)
-        tests += " elsewhere";
-    if (tests.empty())
-        tests = "none (no function has runs of the reference and another algorithm)";
-    return "Markers against the reference " + index.label(reference) + ": " + tests +
+    return "Markers against the reference " + index.label(reference) + ": " +
+           marker_tests_text(paired_any, unpaired_any, cec_tests_wording) +
            " of the errors, Holm correction across each function's comparisons, alpha = " +
            format_number(alpha, 3) + "; + better, - worse, = no significant difference.";
 }
@@ -169,6 +53,7 @@ Table errors_table(const StudyIndex& index, const CecProtocol& protocol, const D
     t.title = std::string(protocol.title) + ", D = " + dim +
               ": error f - f* after MaxFES = " + std::to_string(max_fes) + " evaluations";
     t.header = {"Function", "Algorithm", "Best", "Worst", "Median", "Mean", "Std", "vs reference"};
+    const std::size_t vs_reference_column = 7;
     std::map<std::string, std::vector<std::string>> markers;
     bool paired_any = false;
     bool unpaired_any = false;
@@ -194,11 +79,7 @@ Table errors_table(const StudyIndex& index, const CecProtocol& protocol, const D
         const auto found = markers.find(a);
         if (found == markers.end())
             continue;
-        std::vector<TableCell> row(t.header.size(), text_cell(""));
-        row[0] = text_cell("w/t/l");
-        row[1] = text_cell(index.label(a));
-        row[7] = text_cell(win_tie_loss(found->second));
-        t.add_footer(std::move(row));
+        t.add_footer(win_tie_loss_row(t.header.size(), index.label(a), vs_reference_column, found->second));
     }
     std::string sizes;
     bool same_max_fes = true;
@@ -220,63 +101,25 @@ Table errors_table(const StudyIndex& index, const CecProtocol& protocol, const D
         sizes + deviation_note(protocol, d) + left_out_notes(index);
     t.latex_column(0).heading = true; // the function heads its rows
     t.latex_column(1).key = true;
-    t.latex_column(7).header = "vs ref.";
+    t.latex_column(vs_reference_column).header = "vs ref.";
     format_columns(t);
     return t;
 }
 
-// Per function (row) each algorithm's (column) mean error, on the functions the protocol ranks
-// (not CEC 2017's F2) where every algorithm has runs.
-struct MeanErrors {
-    std::vector<std::size_t> functions;     // indices into Dimension::functions
-    std::vector<std::vector<double>> means; // [function][algorithm]
-    std::size_t excluded = 0;               // functions of the protocol's excluded one (F2 of 2017)
-    std::size_t incomplete = 0;             // functions on which some algorithm has no successful run
+// Each algorithm's sum over the ranked functions of its rank and, for CEC 2022, of its U-score.
+struct RankTotals {
+    std::vector<double> rank_sum;
+    std::vector<double> u_score; // zeros where the protocol has no termination row
 };
 
-MeanErrors mean_errors(const StudyIndex& index, const CecProtocol& protocol, const Dimension& d) {
-    MeanErrors out;
-    for (std::size_t f = 0; f < d.functions.size(); ++f) {
-        if (d.functions[f].function == protocol.excluded_function) {
-            ++out.excluded;
-            continue;
-        }
-        std::vector<double> row;
-        for (const auto& a : index.algorithms()) {
-            const auto found = d.cells[f].find(a);
-            if (found == d.cells[f].end() || found->second.errors.empty())
-                break;
-            row.push_back(mean(found->second.errors));
-        }
-        if (row.size() != index.algorithms().size()) {
-            ++out.incomplete;
-            continue;
-        }
-        out.functions.push_back(f);
-        out.means.push_back(std::move(row));
-    }
-    return out;
-}
-
-// The rank (1 = lowest) of each algorithm's mean error on each function of `m`.
-std::vector<std::vector<double>> mean_error_ranks(const MeanErrors& m) {
-    std::vector<std::vector<double>> ranks;
-    for (const auto& row : m.means)
-        ranks.push_back(average_ranks(row));
-    return ranks;
-}
-
-Table ranks_table(const StudyIndex& index, const CecProtocol& protocol, const Dimension& d,
-                  const std::string& reference) {
+RankTotals rank_totals(const StudyIndex& index, const CecProtocol& protocol, const Dimension& d,
+                       const MeanErrors& m) {
     const auto& algorithms = index.algorithms();
-    const MeanErrors m = mean_errors(index, protocol, d);
-    const auto ranks = mean_error_ranks(m);
-    const std::size_t n = m.functions.size();
-    std::vector<double> rank_sum(algorithms.size(), 0.0);
-    for (const auto& row : ranks)
+    RankTotals totals{std::vector<double>(algorithms.size(), 0.0),
+                      std::vector<double>(algorithms.size(), 0.0)};
+    for (const auto& row : mean_error_ranks(m))
         for (std::size_t j = 0; j < row.size(); ++j)
-            rank_sum[j] += row[j];
-    std::vector<double> u_score(algorithms.size(), 0.0);
+            totals.rank_sum[j] += row[j];
     if (protocol.termination_row)
         for (const std::size_t f : m.functions) {
             std::vector<std::vector<CecTrial>> trials;
@@ -284,9 +127,97 @@ Table ranks_table(const StudyIndex& index, const CecProtocol& protocol, const Di
                 trials.push_back(d.cells[f].at(a).trials);
             const auto scores = cec_u_scores(trials);
             for (std::size_t j = 0; j < algorithms.size(); ++j)
-                u_score[j] += scores[j];
+                totals.u_score[j] += scores[j];
         }
+    return totals;
+}
 
+// An algorithm's markers against the reference over the dimension's functions.
+std::vector<std::string> markers_of(const Dimension& d, const std::string& algorithm) {
+    std::vector<std::string> markers;
+    for (std::size_t f = 0; f < d.functions.size(); ++f)
+        if (const auto found = d.cells[f].find(algorithm);
+            found != d.cells[f].end() && !found->second.marker.empty())
+            markers.push_back(found->second.marker);
+    return markers;
+}
+
+// A row per algorithm over `n` ranked functions; the lowest rank and the highest U-score in bold.
+void add_rank_rows(Table& t, const StudyIndex& index, const CecProtocol& protocol, const Dimension& d,
+                   const std::string& reference, const RankTotals& totals, std::size_t n) {
+    const auto& algorithms = index.algorithms();
+    double best_rank = INFINITY;
+    for (const double r : totals.rank_sum)
+        best_rank = std::min(best_rank, r);
+    double best_u = -INFINITY;
+    for (const double u : totals.u_score)
+        best_u = std::max(best_u, u);
+    for (std::size_t j = 0; j < algorithms.size(); ++j) {
+        const std::vector<std::string> markers = markers_of(d, algorithms[j]);
+        const bool is_reference = algorithms[j] == reference;
+        TableCell mean_rank = number_cell(n == 0 ? NAN : totals.rank_sum[j] / static_cast<double>(n), 4);
+        mean_rank.bold = n > 0 && totals.rank_sum[j] == best_rank;
+        std::vector<TableCell> row = {
+            text_cell(index.label(algorithms[j]) + (is_reference ? " (reference)" : "")), mean_rank,
+            number_cell(n == 0 ? NAN : totals.rank_sum[j], 5),
+            text_cell(is_reference || markers.empty() ? "" : win_tie_loss(markers))};
+        if (protocol.termination_row) {
+            TableCell u = number_cell(n == 0 ? NAN : totals.u_score[j], 6);
+            u.bold = n > 0 && totals.u_score[j] == best_u;
+            row.push_back(u);
+        }
+        t.add_row(std::move(row));
+    }
+}
+
+// The Friedman test of the ranks as a sentence, when there are two functions and two algorithms.
+std::string friedman_note(const MeanErrors& m, std::size_t algorithms) {
+    const std::size_t n = m.functions.size();
+    if (n < 2 || algorithms < 2)
+        return "";
+    const FriedmanResult result = friedman_test(m.means);
+    return " Friedman test of the ranks over the " + std::to_string(n) +
+           " functions: chi-square = " + format_number(result.chi_square, 5) +
+           ", df = " + format_number(result.degrees_of_freedom) +
+           ", p = " + format_number(result.p_value, 3) + ".";
+}
+
+std::string ranks_caption(const StudyIndex& index, const CecProtocol& protocol, const Dimension& d,
+                          const MeanErrors& m) {
+    const std::size_t left_out = m.incomplete;
+    return "Per function, the algorithms are ranked by their mean error after MaxFES (an error below 1e-8 is "
+           "0; "
+           "rank 1 = the lowest mean, ties share the mean of their ranks), as the " +
+           std::string(protocol.title) +
+           " protocol ranks entries; mean and sum over the functions, the lowest in bold." +
+           friedman_note(m, index.algorithms().size()) +
+           (left_out == 0
+                ? std::string()
+                : " " + std::to_string(left_out) + (left_out == 1 ? " function is" : " functions are") +
+                      " left out: some algorithm has no successful run on it.") +
+           (m.excluded == 0 ? std::string()
+                            : " F" + std::to_string(protocol.excluded_function) +
+                                  ", which the organisers excluded from the competition, is not ranked.") +
+           " w/t/l: the functions on which the algorithm is significantly better than, not different from "
+           "and "
+           "worse than the reference (the markers of cec_errors_d" +
+           std::to_string(d.dimension) + ")." +
+           (protocol.termination_row
+                ? " U-score (the CEC 2022 criterion, TR section 2.3): on each function every trial of every "
+                  "algorithm is ranked, those that reached an error below 1e-8 by the evaluations they took "
+                  "(FEterm), ahead of the others by their error, the best trial ranked highest (ties share "
+                  "the "
+                  "mean rank); an algorithm scores the sum of its trials' ranks minus n(n + 1)/2, summed "
+                  "over "
+                  "the functions; the highest in bold."
+                : std::string()) +
+           deviation_note(protocol, d) + left_out_notes(index);
+}
+
+Table ranks_table(const StudyIndex& index, const CecProtocol& protocol, const Dimension& d,
+                  const std::string& reference) {
+    const MeanErrors m = mean_errors(index, protocol, d);
+    const std::size_t n = m.functions.size();
     Table t;
     const std::string dim = std::to_string(d.dimension);
     t.id = "cec_ranks_d" + dim;
@@ -295,64 +226,8 @@ Table ranks_table(const StudyIndex& index, const CecProtocol& protocol, const Di
     t.header = {"Algorithm", "Mean rank", "Sum of ranks", "w/t/l vs reference"};
     if (protocol.termination_row)
         t.header.emplace_back("U-score");
-    double best_rank = INFINITY;
-    for (const double r : rank_sum)
-        best_rank = std::min(best_rank, r);
-    double best_u = -INFINITY;
-    for (const double u : u_score)
-        best_u = std::max(best_u, u);
-    for (std::size_t j = 0; j < algorithms.size(); ++j) {
-        std::vector<std::string> markers;
-        for (std::size_t f = 0; f < d.functions.size(); ++f)
-            if (const auto found = d.cells[f].find(algorithms[j]);
-                found != d.cells[f].end() && !found->second.marker.empty())
-                markers.push_back(found->second.marker);
-        const bool is_reference = algorithms[j] == reference;
-        TableCell mean_rank = number_cell(n == 0 ? NAN : rank_sum[j] / static_cast<double>(n), 4);
-        mean_rank.bold = n > 0 && rank_sum[j] == best_rank;
-        std::vector<TableCell> row = {
-            text_cell(index.label(algorithms[j]) + (is_reference ? " (reference)" : "")), mean_rank,
-            number_cell(n == 0 ? NAN : rank_sum[j], 5),
-            text_cell(is_reference || markers.empty() ? "" : win_tie_loss(markers))};
-        if (protocol.termination_row) {
-            TableCell u = number_cell(n == 0 ? NAN : u_score[j], 6);
-            u.bold = n > 0 && u_score[j] == best_u;
-            row.push_back(u);
-        }
-        t.add_row(std::move(row));
-    }
-    std::string friedman;
-    if (n >= 2 && algorithms.size() >= 2) {
-        const FriedmanResult result = friedman_test(m.means);
-        friedman = " Friedman test of the ranks over the " + std::to_string(n) +
-                   " functions: chi-square = " + format_number(result.chi_square, 5) +
-                   ", df = " + format_number(result.degrees_of_freedom) +
-                   ", p = " + format_number(result.p_value, 3) + ".";
-    }
-    const std::size_t left_out = m.incomplete;
-    t.caption =
-        "Per function, the algorithms are ranked by their mean error after MaxFES (an error below 1e-8 is 0; "
-        "rank 1 = the lowest mean, ties share the mean of their ranks), as the " +
-        std::string(protocol.title) +
-        " protocol ranks entries; mean and sum over the functions, the lowest in bold." + friedman +
-        (left_out == 0
-             ? std::string()
-             : " " + std::to_string(left_out) + (left_out == 1 ? " function is" : " functions are") +
-                   " left out: some algorithm has no successful run on it.") +
-        (m.excluded == 0 ? std::string()
-                         : " F" + std::to_string(protocol.excluded_function) +
-                               ", which the organisers excluded from the competition, is not ranked.") +
-        " w/t/l: the functions on which the algorithm is significantly better than, not different from and "
-        "worse than the reference (the markers of cec_errors_d" +
-        dim + ")." +
-        (protocol.termination_row
-             ? " U-score (the CEC 2022 criterion, TR section 2.3): on each function every trial of every "
-               "algorithm is ranked, those that reached an error below 1e-8 by the evaluations they took "
-               "(FEterm), ahead of the others by their error, the best trial ranked highest (ties share the "
-               "mean rank); an algorithm scores the sum of its trials' ranks minus n(n + 1)/2, summed over "
-               "the functions; the highest in bold."
-             : std::string()) +
-        deviation_note(protocol, d) + left_out_notes(index);
+    add_rank_rows(t, index, protocol, d, reference, rank_totals(index, protocol, d, m), n);
+    t.caption = ranks_caption(index, protocol, d, m);
     format_columns(t);
     return t;
 }
@@ -419,57 +294,22 @@ std::optional<Table> score_table(const StudyIndex& index, const CecProtocol& pro
 }
 
 } // namespace
+} // namespace mhb::tables
 
-std::vector<double> cec_u_scores(const std::vector<std::vector<CecTrial>>& trials) {
-    // Every trial, worst first: not reached before reached; among those not reached, the larger error
-    // first; among those reached, the later FEterm first. Rank 1 = the worst, so the best trial gets
-    // the highest rank (n m when no trial failed), as the TR assigns them.
-    struct Entry {
-        std::size_t algorithm;
-        const CecTrial* trial;
-    };
-    std::vector<Entry> all;
-    for (std::size_t j = 0; j < trials.size(); ++j)
-        for (const auto& t : trials[j])
-            all.push_back({j, &t});
-    const auto worse = [](const CecTrial& a, const CecTrial& b) { // a ranks below b
-        if (a.reached != b.reached)
-            return !a.reached;
-        if (!a.reached)
-            return a.error > b.error;
-        return a.termination > b.termination;
-    };
-    std::stable_sort(all.begin(), all.end(),
-                     [&](const Entry& a, const Entry& b) { return worse(*a.trial, *b.trial); });
-    std::vector<double> scores(trials.size(), 0.0);
-    for (std::size_t i = 0; i < all.size();) {
-        std::size_t end = i + 1;
-        while (end < all.size() && !worse(*all[i].trial, *all[end].trial))
-            ++end;
-        const double rank = (static_cast<double>(i + 1) + static_cast<double>(end)) / 2.0; // ties: mean rank
-        for (std::size_t k = i; k < end; ++k)
-            scores[all[k].algorithm] += rank;
-        i = end;
-    }
-    for (std::size_t j = 0; j < trials.size(); ++j) {
-        const auto n = static_cast<double>(trials[j].size());
-        scores[j] -= n * (n + 1.0) / 2.0;
-    }
-    return scores;
-}
+namespace mhb {
 
 std::vector<Table> cec_tables(const StudyIndex& index, const CecProtocol& protocol,
                               const std::string& reference, double alpha) {
-    std::vector<Table> tables;
-    const std::vector<Dimension> dimensions = by_dimension(index, protocol, reference, alpha);
+    std::vector<Table> out;
+    const std::vector<tables::Dimension> dimensions = tables::by_dimension(index, protocol, reference, alpha);
     for (const auto& d : dimensions) {
-        tables.push_back(errors_table(index, protocol, d, reference, alpha));
-        tables.push_back(ranks_table(index, protocol, d, reference));
+        out.push_back(tables::errors_table(index, protocol, d, reference, alpha));
+        out.push_back(tables::ranks_table(index, protocol, d, reference));
     }
     if (protocol.name == "cec2017")
-        if (auto score = score_table(index, protocol, dimensions))
-            tables.push_back(std::move(*score));
-    return tables;
+        if (auto score = tables::score_table(index, protocol, dimensions))
+            out.push_back(std::move(*score));
+    return out;
 }
 
 } // namespace mhb
