@@ -31,7 +31,7 @@
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
-#include "runner/output_error_identification.hpp"
+#include "runner/single_problem/output_error_identification.hpp"
 
 namespace mhb::cli {
 

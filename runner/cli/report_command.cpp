@@ -16,7 +16,7 @@
 #include "results/store/store.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
-#include "runner/study_lock.hpp"
+#include "runner/execution/study_lock.hpp"
 
 namespace mhb::cli {
 

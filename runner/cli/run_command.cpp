@@ -23,19 +23,19 @@
 #include "results/store/store.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
-#include "runner/components.hpp"
-#include "runner/context.hpp"
-#include "runner/distributed.hpp"
-#include "runner/dry_run.hpp"
-#include "runner/parallel_runner.hpp"
-#include "runner/progress.hpp"
-#include "runner/run_identity.hpp"
-#include "runner/shards.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
-#include "runner/study_lock.hpp"
-#include "runner/study_options.hpp"
-#include "runner/study_presets.hpp"
+#include "runner/distribution/distributed.hpp"
+#include "runner/distribution/shards.hpp"
+#include "runner/execution/context.hpp"
+#include "runner/execution/parallel_runner.hpp"
+#include "runner/execution/progress.hpp"
+#include "runner/execution/run_identity.hpp"
+#include "runner/execution/study_lock.hpp"
+#include "runner/plugins/components.hpp"
+#include "runner/study/dry_run.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
+#include "runner/study/study_options.hpp"
+#include "runner/study/study_presets.hpp"
 
 namespace mhb::cli {
 namespace po = boost::program_options;
@@ -322,7 +322,7 @@ int run_run_command(const std::vector<std::string>& args) {
         return exit_failure;
     }
     // Under mpirun, rank 0 alone touches the directory, prints and reports; the other ranks run
-    // what it hands them (runner/distributed.hpp).
+    // what it hands them (runner/distribution/distributed.hpp).
     if (distributed_rank() != 0) {
         const StopSignals signals;
         RunnerOptions worker;
