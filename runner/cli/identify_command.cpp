@@ -31,7 +31,7 @@
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
-#include "runner/single_problem/output_error_identification.hpp"
+#include "runner/single_problem/output_error_search.hpp"
 
 namespace mhb::cli {
 
@@ -265,7 +265,7 @@ int run_identify_command(const std::vector<std::string>& args) {
     // The linear model whose fit gives estimates, standard errors and verdicts.
     pmsm::LinearModel model;
     double volts_per_unit = 2.0; // the dynamic model's rows carry weight 0.25: half a volt per volt
-    std::optional<OutputIdentification> output;
+    std::optional<pmsm::OutputIdentification> output;
     std::string title;
     try {
         if (kind == pmsm::ModelKind::steady) {
