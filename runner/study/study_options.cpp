@@ -6,6 +6,9 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <optional>
+#include <set>
+#include <utility>
 
 #include "problems/core/parameters.hpp"
 #include "problems/core/spec_grid.hpp"
@@ -14,6 +17,65 @@
 
 namespace mhb {
 namespace po = boost::program_options;
+
+namespace {
+
+// algorithms = / problems =: the first line of a source replaces the list it came with (a
+// preset's, a file's); later ones add to it, each spec remembering where it was written.
+void add_specs(Study& study, std::set<std::string>& seen, const std::string& key, const std::string& value,
+               const std::string& where) {
+    const bool algorithms = key[0] == 'a';
+    auto& list = algorithms ? study.algorithms : study.problems;
+    auto& origins = algorithms ? study.algorithm_origins : study.problem_origins;
+    if (seen.insert(algorithms ? "algorithms" : "problems").second) {
+        list.clear();
+        origins.clear();
+    }
+    origins.resize(list.size());
+    for (auto& spec : split_spec_list(value)) {
+        list.push_back(std::move(spec));
+        origins.push_back(where);
+    }
+}
+
+// Every source adds to the list (a study file's plug-ins and the command line's), each as an
+// absolute path so that study.ini finds it from anywhere; loading is the CLI's (the registries
+// must know the plug-ins' names before the specs are checked).
+void add_plugins(Study& study, const std::string& value) {
+    for (const auto& path : split_spec_list(value)) {
+        const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
+        if (std::find(study.plugins.begin(), study.plugins.end(), absolute) == study.plugins.end())
+            study.plugins.push_back(absolute);
+    }
+}
+
+// budget = TEXT ...: each a whole budget; each line of a refusal its own error.
+void add_budgets(std::vector<StudyBudget>& budgets, const std::string& value, const std::string& prefix,
+                 std::vector<std::string>& errors) {
+    for (const auto& text : split_spec_list(value)) {
+        try {
+            budgets.push_back(parse_budget(text));
+        } catch (const std::invalid_argument& e) {
+            std::string lines = e.what();
+            for (std::size_t start = 0; start < lines.size();) {
+                const auto end = std::min(lines.find('\n', start), lines.size());
+                errors.push_back(prefix + lines.substr(start, end - start));
+                start = end + 1;
+            }
+        }
+    }
+}
+
+// seed = N: any 64-bit unsigned integer, written in full.
+std::optional<std::uint64_t> parse_seed(const std::string& value) {
+    std::uint64_t seed = 0;
+    const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), seed);
+    if (value.empty() || ec != std::errc() || ptr != value.data() + value.size())
+        return std::nullopt;
+    return seed;
+}
+
+} // namespace
 
 po::options_description study_options() {
     po::options_description d("Study (the same names in study files: key = value)");
@@ -82,38 +144,17 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
         return v;
     };
     if (key == "algorithms" || key == "algorithm" || key == "problems" || key == "problem") {
-        const bool algorithms = key[0] == 'a';
-        auto& list = algorithms ? study_.algorithms : study_.problems;
-        auto& origins = algorithms ? study_.algorithm_origins : study_.problem_origins;
-        // The first line of a source replaces the list it came with (a preset's, a file's).
-        if (seen_.insert(algorithms ? "algorithms" : "problems").second) {
-            list.clear();
-            origins.clear();
-        }
-        origins.resize(list.size());
-        for (auto& spec : split_spec_list(value)) {
-            list.push_back(std::move(spec));
-            origins.push_back(where);
-        }
+        add_specs(study_, seen_, key, value, where);
     } else if (key == "plugins" || key == "plugin") {
-        // Every source adds to the list (a study file's plug-ins and the command line's), each as
-        // an absolute path so that study.ini finds it from anywhere; loading is the CLI's (the
-        // registries must know the plug-ins' names before the specs are checked).
-        for (const auto& path : split_spec_list(value)) {
-            const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
-            if (std::find(study_.plugins.begin(), study_.plugins.end(), absolute) == study_.plugins.end())
-                study_.plugins.push_back(absolute);
-        }
+        add_plugins(study_, value);
     } else if (key == "runs") {
         if (const auto v = read_integer(max_runs_per_pair))
             study_.runs = *v;
     } else if (key == "seed") {
-        std::uint64_t seed = 0;
-        const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), seed);
-        if (value.empty() || ec != std::errc() || ptr != value.data() + value.size())
-            fail("is not an integer in [0, 2^64)");
+        if (const auto seed = parse_seed(value))
+            study_.seed = *seed;
         else
-            study_.seed = seed;
+            fail("is not an integer in [0, 2^64)");
     } else if (key == "seeds") {
         if (value == "common")
             study_.seeds = SeedMode::common;
@@ -141,18 +182,7 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
         else
             fail("is not one of {" + cec_protocol_names() + ", none}");
     } else if (key == "budget" || key == "budgets") {
-        for (const auto& text : split_spec_list(value)) {
-            try {
-                budgets_.push_back(parse_budget(text));
-            } catch (const std::invalid_argument& e) {
-                std::string lines = e.what();
-                for (std::size_t start = 0; start < lines.size();) {
-                    const auto end = std::min(lines.find('\n', start), lines.size());
-                    errors.push_back(prefix + lines.substr(start, end - start));
-                    start = end + 1;
-                }
-            }
-        }
+        add_budgets(budgets_, value, prefix, errors);
     } else if (key == "target") {
         double v = 0;
         if (!parse_real(value, v))
