@@ -41,7 +41,7 @@ inline std::string setting(const char* key, const std::string& value) {
 
 // `key=value;...`: everything that must agree between mhbench and a plug-in for the objects they
 // share to have one layout and one meaning. Inline, so that each side computes it with its own
-// compiler and flags; mhbench compares the two texts (runner/plugin_loader.hpp).
+// compiler and flags; mhbench compares the two texts (runner/plugins/plugin_loader.hpp).
 inline std::string plugin_build_settings() {
     using detail::setting;
     std::string s;

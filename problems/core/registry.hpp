@@ -32,7 +32,7 @@ public:
         std::string reference; // the paper (or library) it implements
         std::vector<ParameterInfo> parameters;
         Factory factory;
-        // The plug-in module that registered the entry (runner/plugin_loader.hpp), empty for a
+        // The plug-in module that registered the entry (runner/plugins/plugin_loader.hpp), empty for a
         // built-in one. Set by mhbench when it loads the module, not by the module: its SHA-256
         // joins the identity of every run of the entry, as a data file's does.
         std::string module_path{};

@@ -13,8 +13,8 @@
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
-#include "runner/components.hpp"
-#include "runner/points_reader.hpp"
+#include "runner/plugins/components.hpp"
+#include "runner/single_problem/points_reader.hpp"
 
 namespace mhb::cli {
 int run_eval_command(const std::vector<std::string>& args) {

@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -26,12 +25,12 @@
 #include "problems/pmsm/dynamic_model.hpp"
 #include "problems/pmsm/identifiability.hpp"
 #include "problems/pmsm/pmsm_sources.hpp"
-#include "problems/pmsm/segments.hpp"
 #include "problems/pmsm/steady_state_data.hpp"
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
+#include "runner/cli/identify_report.hpp"
 #include "runner/cli/parse_command_line.hpp"
-#include "runner/output_error_identification.hpp"
+#include "runner/single_problem/output_error_search.hpp"
 
 namespace mhb::cli {
 
@@ -59,17 +58,6 @@ pmsm::FitnessWeights parse_weights(const std::string& text) {
             "--weights " + quoted_excerpt(text) +
             ": all four are zero, which leaves nothing to fit; give at least one > 0");
     return {w[0], w[1], w[2], w[3]};
-}
-
-std::string format(const char* f, double a, double b = 0, double c = 0) {
-    char buf[240];
-    std::snprintf(buf, sizeof buf, f, a, b, c);
-    return buf;
-}
-
-// A percentage, or "n/a" (same width) where it has no value.
-std::string percent_text(double value, const char* f) {
-    return std::isfinite(value) ? format(f, value) : std::string("      n/a  ");
 }
 
 double positive_option(const std::string& text, const char* name) {
@@ -145,28 +133,7 @@ struct Options {
     std::string seeds = "8", evaluations = "20000", threads = "0";
 };
 
-void print_data_summary(std::ostream& out, const pmsm::PmsmSources& data) {
-    for (std::size_t i = 0; i < data.datasets.size(); ++i) {
-        const pmsm::Dataset& d = data.datasets[i];
-        const auto [off, on] = d.state_counts();
-        out << (i == 0 ? "data:    " : "         ") << data.names[i] << ": " << d.size() << " samples ("
-            << off << " at id = 0, " << on << " injected)";
-        try {
-            const double Ts = pmsm::sampling_period(d, data.names[i]);
-            const auto stretches = pmsm::contiguous_segments(d, Ts).size();
-            out << ", Ts = " << format("%.6g", Ts) << " s, " << stretches
-                << (stretches == 1 ? " stretch" : " stretches");
-        } catch (const std::invalid_argument&) {
-            out << ", no time step";
-        }
-        out << '\n';
-    }
-}
-
-} // namespace
-
-int run_identify_command(const std::vector<std::string>& args) {
-    Options o;
+po::options_description make_identify_options(Options& o) {
     po::options_description options(
         "mhbench identify: estimate Rs, Ld, Lq and psi of a PMSM (and optionally the inverter's dead-time\n"
         "voltage) from logged dq data, with standard errors, a verdict per parameter saying whether the "
@@ -207,53 +174,66 @@ int run_identify_command(const std::vector<std::string>& args) {
          "output: evaluations per run")
         ("threads", po::value<std::string>(&o.threads)->default_value(o.threads), "output: threads (0: all cores)");
     // clang-format on
-    po::variables_map vm;
-    if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
-        return exit_ok;
+    return options;
+}
+
+// The options as values, checked; throws std::invalid_argument naming the first that is wrong.
+struct Settings {
+    pmsm::ModelKind kind = pmsm::ModelKind::steady;
+    pmsm::DatasetReadOptions read_options;
+    pmsm::FitnessWeights weights;
+    double settle = 0;
+    int smoothing = 0;
+    int substeps = 2;
+};
+
+Settings check_settings(Options& o, const po::variables_map& vm) {
     if (o.data.empty())
         throw std::invalid_argument("--data FILE is required (see mhbench identify --help)");
     if (o.model != "steady" && o.model != "dynamic" && o.model != "output")
         throw std::invalid_argument("--model = " + value_excerpt(o.model) +
                                     " is not one of steady, dynamic, output");
-    const pmsm::ModelKind kind = o.model == "steady"    ? pmsm::ModelKind::steady
-                                 : o.model == "dynamic" ? pmsm::ModelKind::dynamic
-                                                        : pmsm::ModelKind::output;
-    pmsm::DatasetReadOptions read_options;
-    read_options.injection_threshold = positive_option(o.threshold, "id-threshold");
-    read_options.require_both_states = false;
-    const pmsm::FitnessWeights weights = parse_weights(o.weights);
-    double settle = 0;
-    if (!parse_real(o.settle, settle) || settle < 0)
+    Settings s;
+    s.kind = o.model == "steady"    ? pmsm::ModelKind::steady
+             : o.model == "dynamic" ? pmsm::ModelKind::dynamic
+                                    : pmsm::ModelKind::output;
+    s.read_options.injection_threshold = positive_option(o.threshold, "id-threshold");
+    s.read_options.require_both_states = false;
+    s.weights = parse_weights(o.weights);
+    if (!parse_real(o.settle, s.settle) || s.settle < 0)
         throw std::invalid_argument("--settle = " + value_excerpt(o.settle) + " is not a number >= 0");
-    const int smoothing = static_cast<int>(integer_argument(o.smooth, "smooth", 0, 50));
-    const int substeps = static_cast<int>(integer_argument(o.substeps, "substeps", 1, 1000));
+    s.smoothing = static_cast<int>(integer_argument(o.smooth, "smooth", 0, 50));
+    s.substeps = static_cast<int>(integer_argument(o.substeps, "substeps", 1, 1000));
     o.output.seeds = static_cast<int>(integer_argument(o.seeds, "seeds", 1, 10000));
     o.output.evaluations = integer_argument(o.evaluations, "evaluations", 1, 1000000000000LL);
     o.output.threads = static_cast<int>(integer_argument(o.threads, "threads", 0, 4096));
-    if (kind == pmsm::ModelKind::steady && (o.fit_vdt || vm["smooth"].defaulted() == false))
+    if (s.kind == pmsm::ModelKind::steady && (o.fit_vdt || vm["smooth"].defaulted() == false))
         throw std::invalid_argument("--fit-vdt and --smooth apply to --model dynamic or output");
+    return s;
+}
 
-    const pmsm::PmsmSources data = pmsm::read_sources(o.data, read_options);
-
-    // The same data as a `pmsm` problem of `mhbench run`: its search box and its warnings.
-    std::string problem_spec = "pmsm:model=" + o.model + ",data=" + o.data + ",id_threshold=" + o.threshold;
-    if (kind == pmsm::ModelKind::steady) {
-        problem_spec += ",settle=" + o.settle;
+// The same data as a `pmsm` problem of `mhbench run`: its search box and its warnings.
+std::string problem_spec_of(const Options& o, const Settings& s) {
+    std::string spec = "pmsm:model=" + o.model + ",data=" + o.data + ",id_threshold=" + o.threshold;
+    if (s.kind == pmsm::ModelKind::steady) {
+        spec += ",settle=" + o.settle;
         const char* keys[] = {"w1", "w2", "w3", "w4"};
-        const double values[] = {weights.w1, weights.w2, weights.w3, weights.w4};
+        const double values[] = {s.weights.w1, s.weights.w2, s.weights.w3, s.weights.w4};
         for (int j = 0; j < 4; ++j)
-            problem_spec += std::string(",") + keys[j] + "=" + format_real(values[j]);
+            spec += std::string(",") + keys[j] + "=" + format_real(values[j]);
     } else {
-        problem_spec += ",fit_vdt=" + std::string(o.fit_vdt ? "on" : "off");
-        problem_spec += kind == pmsm::ModelKind::dynamic ? ",smooth=" + std::to_string(smoothing)
-                                                         : ",substeps=" + std::to_string(substeps);
+        spec += ",fit_vdt=" + std::string(o.fit_vdt ? "on" : "off");
+        spec += s.kind == pmsm::ModelKind::dynamic ? ",smooth=" + std::to_string(s.smoothing)
+                                                   : ",substeps=" + std::to_string(s.substeps);
     }
+    return spec;
+}
 
-    // Made once: the output model optimises it, and every model reports its warnings. Data that
-    // the linear models cannot determine make no problem; identify still judges them.
-    std::unique_ptr<Problem> problem;
+// Made once: the output model optimises it, and every model reports its warnings. Data that the
+// linear models cannot determine make no problem (none is returned); identify still judges them.
+std::unique_ptr<Problem> make_problem(const std::string& spec, pmsm::ModelKind kind) {
     try {
-        problem = builtin_problems().create(Spec::parse(problem_spec));
+        return builtin_problems().create(Spec::parse(spec));
     } catch (const std::invalid_argument& e) {
         if (kind == pmsm::ModelKind::output) // failed work (exit 1), as for the other models below
             throw std::runtime_error(e.what());
@@ -261,41 +241,40 @@ int run_identify_command(const std::vector<std::string>& args) {
         if (kind == pmsm::ModelKind::output)
             throw;
     }
+    return nullptr;
+}
 
-    // The linear model whose fit gives estimates, standard errors and verdicts.
-    pmsm::LinearModel model;
-    double volts_per_unit = 2.0; // the dynamic model's rows carry weight 0.25: half a volt per volt
-    std::optional<OutputIdentification> output;
-    std::string title;
+Identification identify(const Options& o, const Settings& s, const pmsm::PmsmSources& data,
+                        const Problem* problem) {
+    Identification id;
     try {
-        if (kind == pmsm::ModelKind::steady) {
-            model = steady_model(data, weights, settle, volts_per_unit);
-            title = "steady-state model (eq. 11 of Li, Wang and Ji 2017), exact least squares";
-        } else if (kind == pmsm::ModelKind::dynamic) {
+        if (s.kind == pmsm::ModelKind::steady) {
+            id.model = steady_model(data, s.weights, s.settle, id.volts_per_unit);
+            id.title = "steady-state model (eq. 11 of Li, Wang and Ji 2017), exact least squares";
+        } else if (s.kind == pmsm::ModelKind::dynamic) {
             pmsm::DynamicModelOptions dynamic;
             dynamic.fit_dead_time = o.fit_vdt;
-            dynamic.smoothing = smoothing;
-            model = pmsm::dynamic_model(data.datasets, data.names, dynamic);
-            title = "dynamic model (discrete dq voltage equations with di/dt), exact least squares";
+            dynamic.smoothing = s.smoothing;
+            id.model = pmsm::dynamic_model(data.datasets, data.names, dynamic);
+            id.title = "dynamic model (discrete dq voltage equations with di/dt), exact least squares";
         } else {
             const auto& output_problem = dynamic_cast<const pmsm::OutputErrorProblem&>(*problem);
-            output = identify_output_error(output_problem, o.output);
-            model = output->linearised;
-            volts_per_unit = 1.0;
-            title = "output-error model (simulated against measured currents), " + o.output.algorithm +
-                    " from " + std::to_string(o.output.seeds) + " seeds of " +
-                    std::to_string(o.output.evaluations) + " evaluations";
+            id.output = identify_output_error(output_problem, o.output);
+            id.model = id.output->linearised;
+            id.volts_per_unit = 1.0;
+            id.title = "output-error model (simulated against measured currents), " + o.output.algorithm +
+                       " from " + std::to_string(o.output.seeds) + " seeds of " +
+                       std::to_string(o.output.evaluations) + " evaluations";
         }
     } catch (const std::invalid_argument& e) {
         // Data that do not make the model are failed work (exit 1), not a bad command line.
         throw std::runtime_error(e.what());
     }
-    const pmsm::LinearFit fit = pmsm::fit_linear_model(model);
-    const pmsm::Identifiability judged = pmsm::judge_identifiability(model, fit, kind);
-    const Eigen::VectorXd estimate = output ? output->best_x : fit.theta;
-    const Eigen::Index k = model.parameters();
+    return id;
+}
 
-    // True values from the metadata, for the model's coordinates.
+// True values from the metadata, for the model's coordinates.
+std::optional<Eigen::VectorXd> true_values(const pmsm::PmsmSources& data, Eigen::Index k) {
     std::optional<Eigen::VectorXd> truth;
     if (const auto nominal = data.nominal_parameters()) {
         truth = Eigen::VectorXd(k);
@@ -303,101 +282,42 @@ int run_identify_command(const std::vector<std::string>& args) {
         if (k == 5)
             (*truth)[4] = pmsm::dead_time_voltage(data.datasets.front());
     }
+    return truth;
+}
+
+} // namespace
+
+int run_identify_command(const std::vector<std::string>& args) {
+    Options o;
+    const po::options_description options = make_identify_options(o);
+    po::variables_map vm;
+    if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
+        return exit_ok;
+    const Settings settings = check_settings(o, vm);
+
+    const pmsm::PmsmSources data = pmsm::read_sources(o.data, settings.read_options);
+    const std::string problem_spec = problem_spec_of(o, settings);
+    const std::unique_ptr<Problem> problem = make_problem(problem_spec, settings.kind);
+    const Identification id = identify(o, settings, data, problem.get());
+    const pmsm::LinearFit fit = pmsm::fit_linear_model(id.model);
+    const pmsm::Identifiability judged = pmsm::judge_identifiability(id.model, fit, settings.kind);
+    const Eigen::VectorXd estimate = id.output ? id.output->best_x : fit.theta;
+    const std::optional<Eigen::VectorXd> truth = true_values(data, id.model.parameters());
+    const char* unit =
+        settings.kind == pmsm::ModelKind::output ? "A" : (id.volts_per_unit == 1.0 ? "(weighted)" : "V");
+    const IdentifyReport report{id, fit, estimate, truth, settings.kind, unit};
 
     std::ostream& out = std::cout;
-    out << "PMSM identification: " << title << '\n';
+    out << "PMSM identification: " << id.title << '\n';
     print_data_summary(out, data);
-    out << (volts_per_unit == 1.0 && kind != pmsm::ModelKind::output ? "weights: " + o.weights + "\n" : "")
+    out << (id.volts_per_unit == 1.0 && settings.kind != pmsm::ModelKind::output
+                ? "weights: " + o.weights + "\n"
+                : "")
         << '\n';
-    const char* units[] = {"[ohm]", "[H]  ", "[H]  ", "[Wb] ", "[V]  "};
-    out << "parameter   estimate        std. error      (% of est.)";
-    if (output)
-        out << "  spread over seeds";
-    if (truth)
-        out << "   true value      error";
-    out << '\n';
-    for (Eigen::Index j = 0; j < k; ++j) {
-        char buf[240];
-        const double relative = 100.0 * fit.standard_error[j] / std::fabs(estimate[j]);
-        // Never a nan or an inf as a number: "n/a" where the data give none.
-        const bool determined = fit.determined[static_cast<std::size_t>(j)];
-        std::snprintf(buf, sizeof buf, "%-3s %s   %-14s  %-14s  ",
-                      model.parameter_names[static_cast<std::size_t>(j)].c_str(), units[j],
-                      determined ? format("%.8g", estimate[j]).c_str() : "n/a",
-                      std::isfinite(fit.standard_error[j]) ? format("%.4g", fit.standard_error[j]).c_str()
-                                                           : "n/a");
-        out << buf << percent_text(relative, "%9.3g %%");
-        if (output) {
-            std::snprintf(buf, sizeof buf, "  %-17.4g", output->spread[j]);
-            out << buf;
-        }
-        if (truth) {
-            std::snprintf(buf, sizeof buf, "    %-14.8g  ", (*truth)[j]);
-            out << buf
-                << percent_text(determined ? 100.0 * (estimate[j] - (*truth)[j]) / (*truth)[j] : NAN,
-                                "%+9.3g %%");
-        }
-        out << '\n';
-    }
-    out << '\n';
-    if (kind == pmsm::ModelKind::steady)
-        out << format("f* (eq. 11 at the estimate) = %.10g\n", fit.f);
-    else if (kind == pmsm::ModelKind::dynamic)
-        out << format("f* (sum of 0.25 (r_d^2 + r_q^2) at the estimate) = %.10g\n", fit.f);
-    else
-        out << format(
-            "f (sum of squared current errors at the estimate) = %.10g A^2; %.0f of %.0f seeds reached it "
-            "(to 1e-6 relative)\n",
-            output->best_f, output->seeds_at_best, static_cast<double>(output->seed_f.size()));
-    const char* unit = kind == pmsm::ModelKind::output ? "A" : (volts_per_unit == 1.0 ? "(weighted)" : "V");
-    for (const auto& [axis, stats] : {std::pair{"d", &fit.residual_d}, std::pair{"q", &fit.residual_q}})
-        out << "residuals, " << axis << " axis: RMS " << format("%.4g ", stats->rms * volts_per_unit) << unit
-            << format(", max %.4g ", stats->max_abs * volts_per_unit) << unit << ", lag-1 autocorrelation "
-            << (std::isfinite(stats->lag1) ? format("%.3f", stats->lag1) : std::string("n/a")) << '\n';
-    out << format("%.0f equations, %.0f parameters; condition number ",
-                  static_cast<double>(model.equations()), static_cast<double>(k))
-        << (std::isfinite(fit.condition_number) ? format("%.4g", fit.condition_number)
-                                                : std::string("infinite"))
-        << " (columns scaled to unit norm)\n";
-    if (fit.covariance.allFinite() && k >= 4) {
-        const double correlation =
-            fit.covariance(0, 3) / std::sqrt(fit.covariance(0, 0) * fit.covariance(3, 3));
-        if (std::isfinite(correlation))
-            out << format("correlation of the Rs and psi estimates: %.3f\n", correlation);
-    }
-
-    out << "\nWhat the data determine:\n";
-    const double residual_rms =
-        std::sqrt((fit.residual_d.rms * fit.residual_d.rms + fit.residual_q.rms * fit.residual_q.rms) / 2.0);
-    for (const pmsm::ParameterJudgement& p : judged.parameters) {
-        out << "  " << p.name << ": " << pmsm::to_string(p.verdict) << " (" << p.reason << ")";
-        if (std::isfinite(p.signal_rms) && residual_rms > 0)
-            out << format("; its term is %.3g ", p.signal_rms * volts_per_unit) << unit
-                << format(" RMS in the equations, %.3g times the residual RMS", p.signal_rms / residual_rms);
-        out << '\n';
-        if (!p.advice.empty())
-            out << "    to determine it: " << p.advice << '\n';
-    }
-    for (const std::string& note : judged.notes)
-        out << "  note: " << note << '\n';
-    out << "\nStandard errors come from the residual variance and the fit's covariance"
-        << (output ? " linearised at the estimate" : "")
-        << ": how far noise alone\n"
-           "moves the estimate (one sigma), assuming independent residuals. They do not cover systematic "
-           "errors\n"
-           "(inverter dead time and delay, a voltage offset, a model that misses part of the data), which "
-           "show\n"
-           "as correlated residuals above.\n";
-    if (output)
-        out << "The spread over seeds measures how reliably the optimiser finds the estimate, not the data's "
-               "noise.\n";
-    if (problem)
-        for (const std::string& warning : problem->warnings())
-            out << "note: as a problem of mhbench run (" << problem_spec << "): " << warning << '\n';
-    for (Eigen::Index j = 0; j < k; ++j)
-        if (estimate[j] <= 0 && j < 4 && fit.determined[static_cast<std::size_t>(j)])
-            out << "warning: " << model.parameter_names[static_cast<std::size_t>(j)]
-                << " came out non-positive: the data do not support the model\n";
+    print_estimates(out, report);
+    print_fit(out, report);
+    print_verdicts(out, report, judged);
+    print_caveats(out, report, problem.get(), problem_spec);
     return exit_ok;
 }
 

@@ -12,8 +12,8 @@
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
-#include "runner/components.hpp"
-#include "runner/study_presets.hpp"
+#include "runner/plugins/components.hpp"
+#include "runner/study/study_presets.hpp"
 
 namespace mhb::cli {
 namespace po = boost::program_options;

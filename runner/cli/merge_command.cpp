@@ -15,15 +15,15 @@
 #include "results/store/store.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
-#include "runner/components.hpp"
-#include "runner/context.hpp"
-#include "runner/data_provenance.hpp"
-#include "runner/parallel_runner.hpp"
-#include "runner/run_identity.hpp"
-#include "runner/shards.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
-#include "runner/study_lock.hpp"
+#include "runner/distribution/shards.hpp"
+#include "runner/execution/context.hpp"
+#include "runner/execution/data_provenance.hpp"
+#include "runner/execution/parallel_runner.hpp"
+#include "runner/execution/run_identity.hpp"
+#include "runner/execution/study_lock.hpp"
+#include "runner/plugins/components.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
 
 namespace mhb::cli {
 
@@ -81,46 +81,12 @@ std::vector<std::string> provenance_errors(const std::map<int, const Shard*>& sh
                                  first_files, first.dir.string());
 }
 
-} // namespace
-
-int run_merge_command(const std::vector<std::string>& args) {
-    po::options_description visible(
-        "Usage: mhbench merge OUT DIR... [options]\n\n"
-        "Joins the n shard directories of one study (each made by mhbench run --shard i/n --out DIR)\n"
-        "into the study directory OUT, with the records one process would have written, byte for\n"
-        "byte, then builds its report. The shards must all be finished, of the same study, and be\n"
-        "shards 1..n each exactly once.\n\nOptions");
-    visible.add_options()("help,h", "this text")("overwrite", po::bool_switch(), "replace a study in OUT")(
-        "threads", po::value<int>()->default_value(0), "recorded in context.ini (merging uses one)")(
-        "no-report", po::bool_switch(), "do not build the report")(
-        "no-figures", po::bool_switch(), "build the report without figures")("quiet,q", po::bool_switch(),
-                                                                             "print nothing but errors");
-    po::options_description hidden;
-    hidden.add_options()("dirs", po::value<std::vector<std::string>>()->multitoken());
-    po::options_description all;
-    all.add(visible).add(hidden);
-    po::positional_options_description positional;
-    positional.add("dirs", -1);
-    po::variables_map vm;
-    if (!parse_command_line(
-            args, all, vm, [&] { std::cout << visible << '\n'; }, &positional))
-        return exit_ok;
-    const auto dirs =
-        vm.count("dirs") ? vm["dirs"].as<std::vector<std::string>>() : std::vector<std::string>{};
-    if (dirs.size() < 2) {
-        std::cerr << "mhbench merge: give the output directory and at least one shard directory "
-                     "(mhbench merge OUT DIR...; see --help)\n";
-        return exit_usage;
-    }
-    const fs::path out = dirs.front();
-
-    std::vector<Shard> shards;
-    for (std::size_t i = 1; i < dirs.size(); ++i)
-        shards.push_back(read_shard(dirs[i]));
-    // One study, one shard count, each index once, none missing.
+// One study, one shard count, each index once, none missing: one line per way the shards fail
+// that. `by_index` gets the shards by their index.
+std::vector<std::string> shard_set_errors(const std::vector<Shard>& shards,
+                                          std::map<int, const Shard*>& by_index) {
     std::vector<std::string> errors;
     const Shard& first = shards.front();
-    std::map<int, const Shard*> by_index;
     for (const Shard& s : shards) {
         if (s.data.study_text != first.data.study_text)
             errors.push_back(s.dir.string() + ": holds another study than " + first.dir.string() +
@@ -145,18 +111,13 @@ int run_merge_command(const std::vector<std::string>& args) {
                              missing + (missing.find(',') == std::string::npos ? " is" : " are") +
                              " missing");
     }
-    if (!errors.empty()) {
-        for (const auto& e : errors)
-            std::cerr << "mhbench merge: " << e << '\n';
-        return exit_failure;
-    }
+    return errors;
+}
 
-    // The study itself, to check that each shard holds exactly the runs its index is given.
-    // Its plug-ins are loaded from the paths study.ini records (a PluginError is one line, exit 1).
-    const Study study = parse_study_ini(first.data.study_text, "study.ini");
-    const Components components = compose_components(study.plugins);
-    const PreparedStudy prepared = prepare_study(study, components.algorithms, components.problems);
-    const auto expected = shard_run_ids(prepared, first.spec.count);
+// Each shard must hold exactly the runs its index is given; false, said, when one does not.
+bool shards_hold_their_runs(const std::map<int, const Shard*>& by_index, const PreparedStudy& prepared,
+                            int count) {
+    const auto expected = shard_run_ids(prepared, count);
     for (const auto& [index, shard] : by_index) {
         std::vector<std::int64_t> ids;
         for (const auto& r : shard->data.runs)
@@ -166,10 +127,86 @@ int run_merge_command(const std::vector<std::string>& args) {
                       << " runs, not the " << expected[static_cast<std::size_t>(index - 1)].size()
                       << " runs of shard " << shard_text(shard->spec)
                       << " (was it run by another mhbench version?)\n";
-            return exit_failure;
+            return false;
         }
     }
+    return true;
+}
 
+// context.ini of the merged study: this session, the shards it came from, and every session that
+// wrote into them.
+std::string merged_context(const std::map<int, const Shard*>& by_index, const PreparedStudy& prepared,
+                           int threads, const std::vector<std::string>& args) {
+    std::vector<std::string> command_line{"mhbench", "merge"};
+    command_line.insert(command_line.end(), args.begin(), args.end());
+    std::string context = context_ini(threads > 0 ? threads : 1, command_line);
+    context += "merged_from =";
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) on " " + a temporary here.
+    for (const auto& [index, shard] : by_index)
+        context.append(" ").append(shard->dir.string());
+    context += "\nshards = " + std::to_string(by_index.begin()->second->spec.count) + '\n';
+    std::string shard_sessions;
+    for (const auto& [index, shard] : by_index)
+        shard_sessions += context_sessions(shard->data.context_text);
+    return context_with_history(context + context_data_files(prepared.problems), shard_sessions);
+}
+
+po::options_description merge_options() {
+    po::options_description visible(
+        "Usage: mhbench merge OUT DIR... [options]\n\n"
+        "Joins the n shard directories of one study (each made by mhbench run --shard i/n --out DIR)\n"
+        "into the study directory OUT, with the records one process would have written, byte for\n"
+        "byte, then builds its report. The shards must all be finished, of the same study, and be\n"
+        "shards 1..n each exactly once.\n\nOptions");
+    visible.add_options()("help,h", "this text")("overwrite", po::bool_switch(), "replace a study in OUT")(
+        "threads", po::value<int>()->default_value(0), "recorded in context.ini (merging uses one)")(
+        "no-report", po::bool_switch(), "do not build the report")(
+        "no-figures", po::bool_switch(), "build the report without figures")("quiet,q", po::bool_switch(),
+                                                                             "print nothing but errors");
+    return visible;
+}
+
+} // namespace
+
+int run_merge_command(const std::vector<std::string>& args) {
+    const po::options_description visible = merge_options();
+    po::options_description hidden;
+    hidden.add_options()("dirs", po::value<std::vector<std::string>>()->multitoken());
+    po::options_description all;
+    all.add(visible).add(hidden);
+    po::positional_options_description positional;
+    positional.add("dirs", -1);
+    po::variables_map vm;
+    if (!parse_command_line(
+            args, all, vm, [&] { std::cout << visible << '\n'; }, &positional))
+        return exit_ok;
+    const auto dirs =
+        vm.count("dirs") ? vm["dirs"].as<std::vector<std::string>>() : std::vector<std::string>{};
+    if (dirs.size() < 2) {
+        std::cerr << "mhbench merge: give the output directory and at least one shard directory "
+                     "(mhbench merge OUT DIR...; see --help)\n";
+        return exit_usage;
+    }
+    const fs::path out = dirs.front();
+
+    std::vector<Shard> shards;
+    for (std::size_t i = 1; i < dirs.size(); ++i)
+        shards.push_back(read_shard(dirs[i]));
+    std::map<int, const Shard*> by_index;
+    if (const auto errors = shard_set_errors(shards, by_index); !errors.empty()) {
+        for (const auto& e : errors)
+            std::cerr << "mhbench merge: " << e << '\n';
+        return exit_failure;
+    }
+    const Shard& first = shards.front();
+
+    // The study itself, to check that each shard holds exactly the runs its index is given.
+    // Its plug-ins are loaded from the paths study.ini records (a PluginError is one line, exit 1).
+    const Study study = parse_study_ini(first.data.study_text, "study.ini");
+    const Components components = compose_components(study.plugins);
+    const PreparedStudy prepared = prepare_study(study, components.algorithms, components.problems);
+    if (!shards_hold_their_runs(by_index, prepared, first.spec.count))
+        return exit_failure;
     if (const auto mixed = provenance_errors(by_index, prepared); !mixed.empty()) {
         for (const auto& e : mixed)
             std::cerr << "mhbench merge: " << e << '\n';
@@ -185,21 +222,10 @@ int run_merge_command(const std::vector<std::string>& args) {
         std::cerr << "mhbench merge: " << e.what() << "; wait for it or choose another OUT\n";
         return exit_failure;
     }
-
-    std::vector<std::string> command_line{"mhbench", "merge"};
-    command_line.insert(command_line.end(), args.begin(), args.end());
-    std::string context =
-        context_ini(vm["threads"].as<int>() > 0 ? vm["threads"].as<int>() : 1, command_line);
-    context += "merged_from =";
-    for (const auto& [index, shard] : by_index)
-        context += " " + shard->dir.string();
-    context += "\nshards = " + std::to_string(first.spec.count) + '\n';
-    std::string shard_sessions;
-    for (const auto& [index, shard] : by_index)
-        shard_sessions += context_sessions(shard->data.context_text);
-    context = context_with_history(context + context_data_files(prepared.problems), shard_sessions);
-    StudyWriter writer(out, first.data.study_text, context, prepared.parameter_columns,
-                       vm["overwrite"].as<bool>(), prepared.algorithms, study_run_keys(prepared));
+    StudyWriter writer(out, first.data.study_text,
+                       merged_context(by_index, prepared, vm["threads"].as<int>(), args),
+                       prepared.parameter_columns, vm["overwrite"].as<bool>(), prepared.algorithms,
+                       study_run_keys(prepared));
     for (const auto& [index, shard] : by_index)
         for (const auto& record : shard->data.runs) {
             const auto wall = shard->data.wall_seconds.find(record.run_id);

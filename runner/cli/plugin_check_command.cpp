@@ -1,4 +1,4 @@
-// `mhbench plugin-check --algorithm SPEC | --problem SPEC`: the checks of runner/plugin_check.hpp
+// `mhbench plugin-check --algorithm SPEC | --problem SPEC`: the checks of runner/plugins/plugin_check.hpp
 // on a user's optimiser or problem (or a built-in one), one line each, exit 1 when any fails.
 #include <boost/program_options.hpp>
 #include <cstdio>
@@ -9,8 +9,8 @@
 
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
-#include "runner/components.hpp"
-#include "runner/plugin_check.hpp"
+#include "runner/plugins/components.hpp"
+#include "runner/plugins/plugin_check.hpp"
 
 namespace mhb::cli {
 namespace {

@@ -16,7 +16,7 @@
 #include "results/store/store.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
-#include "runner/study_lock.hpp"
+#include "runner/execution/study_lock.hpp"
 
 namespace mhb::cli {
 
@@ -91,15 +91,17 @@ bool is_within(const std::filesystem::path& inner, const std::filesystem::path& 
     return end_b == b.end() || (std::next(end_b) == b.end() && end_b->empty()); // "dir/" ends in ""
 }
 
-} // namespace
-
-int run_report_command(const std::vector<std::string>& args) {
+// The command line's values, as given.
+struct ReportCommandLine {
     std::string study_dir;
     std::string out_dir;
     std::string reference;
     std::string formats = "md,tex,csv";
     double alpha = 0.05;
     std::string ioh_precision = "ioh";
+};
+
+po::options_description report_options(ReportCommandLine& given) {
     po::options_description visible(
         "Usage: mhbench report DIR [options]\n\n"
         "Rebuilds, from the study directory DIR alone, the report in DIR/report/:\n"
@@ -119,56 +121,47 @@ int run_report_command(const std::vector<std::string>& args) {
         "    budget when there are several; rebuilt by every report. Its path is printed at the end.\n"
         "The Markdown tables are also printed here.\n\nOptions");
     visible.add_options()("help,h", "this text")(
-        "out", po::value(&out_dir),
+        "out", po::value(&given.out_dir),
         "report directory (default: DIR/report); never a study directory (refused: the report would "
         "replace its records), and refused inside DIR while another process writes the study")(
-        "reference", po::value(&reference),
+        "reference", po::value(&given.reference),
         "algorithm the tests compare against: a full spec or a name of the study (default: itlbo, else the "
-        "first algorithm)")("alpha", po::value(&alpha)->default_value(0.05, "0.05"),
+        "first algorithm)")("alpha", po::value(&given.alpha)->default_value(0.05, "0.05"),
                             "significance level of the +/=/- markers, in (0, 1)")(
         "no-figures", "write tables and curve data only (index.html says so; it shows figures an earlier "
                       "report drew, marked as such)")(
         "open", "print index.html's path and open it in a browser (xdg-open) when a display is available")(
-        "format", po::value(&formats)->default_value(formats), "table formats to write: any of md,tex,csv")(
-        "ioh-precision", po::value(&ioh_precision)->default_value(ioh_precision),
+        "format", po::value(&given.formats)->default_value(given.formats),
+        "table formats to write: any of md,tex,csv")(
+        "ioh-precision", po::value(&given.ioh_precision)->default_value(given.ioh_precision),
         "raw_y in the IOHprofiler export (ioh/*.dat): ioh = %.10f, what IOHexperimenter writes (an error "
         "below 5e-11 reads 0); full = every digit (1.234e-12), which IOHanalyzer reads too");
-    po::options_description hidden;
-    hidden.add_options()("study", po::value(&study_dir));
-    po::options_description all;
-    all.add(visible).add(hidden);
-    po::positional_options_description positional;
-    positional.add("study", 1);
-    po::variables_map vm;
-    if (!parse_command_line(
-            args, all, vm, [&] { std::cout << visible << '\n'; }, &positional))
-        return exit_ok;
-    if (study_dir.empty()) {
-        std::cerr << "mhbench report: give the study directory (mhbench report DIR; see --help)\n";
-        return exit_usage;
-    }
-    if (ioh_precision != "ioh" && ioh_precision != "full") {
-        std::cerr << "mhbench report: --ioh-precision '" << ioh_precision.substr(0, 40)
-                  << "' is not one of ioh, full\n";
-        return exit_usage;
-    }
+    return visible;
+}
+
+// The report's options from the command line's (--ioh-precision checked already).
+ReportOptions report_options_of(const ReportCommandLine& given, const po::variables_map& vm) {
     ReportOptions options;
-    options.out_dir = out_dir;
-    options.ioh_precision = ioh_precision == "full" ? IohPrecision::full : IohPrecision::logger;
-    if (!reference.empty())
-        options.reference = reference;
-    options.alpha = alpha;
+    options.out_dir = given.out_dir;
+    options.ioh_precision = given.ioh_precision == "full" ? IohPrecision::full : IohPrecision::logger;
+    if (!given.reference.empty())
+        options.reference = given.reference;
+    options.alpha = given.alpha;
     options.figures = vm.count("no-figures") == 0;
     options.formats.clear();
-    std::stringstream list(formats);
+    std::stringstream list(given.formats);
     for (std::string f; std::getline(list, f, ',');) {
         const auto first = f.find_first_not_of(' ');
         if (first != std::string::npos) // "md, tex" is meant as "md,tex"
             options.formats.insert(f.substr(first, f.find_last_not_of(' ') - first + 1));
     }
     options.plot_script = std::filesystem::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
-    const std::filesystem::path report_dir =
-        out_dir.empty() ? std::filesystem::path(study_dir) / "report" : std::filesystem::path(out_dir);
+    return options;
+}
+
+// The report of the study in `study_dir` into `report_dir`, printed, and opened when asked.
+int write_report(const std::string& study_dir, const std::filesystem::path& report_dir,
+                 const ReportOptions& options, bool open) {
     if (holds_study_records(report_dir)) {
         std::cerr << "mhbench report: --out " << report_dir.string()
                   << " is a study directory, and a report would replace its records; leave --out out "
@@ -202,10 +195,40 @@ int run_report_command(const std::vector<std::string>& args) {
         throw;
     }
     std::cout << printed.str();
-    if (vm.count("open") != 0)
+    if (open)
         open_in_browser(outcome.html);
     // Ctrl-C during the figures: the tables are written, build_report said so in one line on stderr.
     return outcome.interrupted ? exit_interrupted : exit_ok;
+}
+
+} // namespace
+
+int run_report_command(const std::vector<std::string>& args) {
+    ReportCommandLine given;
+    const po::options_description visible = report_options(given);
+    po::options_description hidden;
+    hidden.add_options()("study", po::value(&given.study_dir));
+    po::options_description all;
+    all.add(visible).add(hidden);
+    po::positional_options_description positional;
+    positional.add("study", 1);
+    po::variables_map vm;
+    if (!parse_command_line(
+            args, all, vm, [&] { std::cout << visible << '\n'; }, &positional))
+        return exit_ok;
+    if (given.study_dir.empty()) {
+        std::cerr << "mhbench report: give the study directory (mhbench report DIR; see --help)\n";
+        return exit_usage;
+    }
+    if (given.ioh_precision != "ioh" && given.ioh_precision != "full") {
+        std::cerr << "mhbench report: --ioh-precision '" << given.ioh_precision.substr(0, 40)
+                  << "' is not one of ioh, full\n";
+        return exit_usage;
+    }
+    const std::filesystem::path report_dir = given.out_dir.empty()
+                                                 ? std::filesystem::path(given.study_dir) / "report"
+                                                 : std::filesystem::path(given.out_dir);
+    return write_report(given.study_dir, report_dir, report_options_of(given, vm), vm.count("open") != 0);
 }
 
 } // namespace mhb::cli

@@ -38,11 +38,8 @@ long long integer_option(const po::variables_map& vm, const char* name, long lon
     return integer_argument(vm[name].as<std::string>(), name, min, max);
 }
 
-} // namespace
-
-int run_simulate_command(const std::vector<std::string>& args) {
-    pmsm::SimulatorConfig config;
-    std::string out;
+// The options; `config.stator_frame_hold` and `out` are written by Boost as it parses.
+po::options_description simulate_options(pmsm::SimulatorConfig& config, std::string& out) {
     po::options_description options(
         "mhbench simulate: simulate a PMSM drive - the paper's motor by default (Li, Wang and Ji 2017,\n"
         "Table 1: Rs 0.33 ohm, Ld = Lq = 3.24 mH, psi 0.0776 Wb, p = 2), any motor with the motor options -\n"
@@ -98,27 +95,32 @@ int run_simulate_command(const std::vector<std::string>& args) {
          "vector lags the rotor by omega Ts / 2 on average (1.5 omega Ts with --delay 1), about 1.1 V on ud\n"
          "at 2500 rpm; default: held in the rotor dq frame (ideal)");
     // clang-format on
-    po::variables_map vm;
-    if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
-        return exit_ok;
-    if (out.empty())
-        throw std::invalid_argument("--out FILE is required (see mhbench simulate --help)");
+    return options;
+}
+
+// --motor, then the motor options that override its values.
+pmsm::MotorParameters motor_of(const po::variables_map& vm) {
     const std::string& motor = vm["motor"].as<std::string>();
     if (motor != "paper" && motor != "ipm")
         throw std::invalid_argument("--motor = " + value_excerpt(motor) + " is not one of paper, ipm");
-    config.motor = motor == "ipm" ? pmsm::ipm_motor() : pmsm::paper_motor();
+    pmsm::MotorParameters parameters = motor == "ipm" ? pmsm::ipm_motor() : pmsm::paper_motor();
     const auto override_value = [&](const char* name, double& value) {
         if (vm.count(name) != 0)
             value = real_option(vm, name);
     };
-    override_value("rs", config.motor.Rs);
-    override_value("ld", config.motor.Ld);
-    override_value("lq", config.motor.Lq);
-    override_value("psi", config.motor.psi);
-    override_value("inertia", config.motor.J);
-    override_value("friction", config.motor.B);
+    override_value("rs", parameters.Rs);
+    override_value("ld", parameters.Ld);
+    override_value("lq", parameters.Lq);
+    override_value("psi", parameters.psi);
+    override_value("inertia", parameters.J);
+    override_value("friction", parameters.B);
     if (vm.count("pole-pairs") != 0)
-        config.motor.pole_pairs = static_cast<int>(integer_option(vm, "pole-pairs", 1, 100));
+        parameters.pole_pairs = static_cast<int>(integer_option(vm, "pole-pairs", 1, 100));
+    return parameters;
+}
+
+// The drive, the condition and the measurement, from the options (the motor's already set).
+void configure(const po::variables_map& vm, pmsm::SimulatorConfig& config) {
     config.vdc = real_option(vm, "vdc");
     config.current_bandwidth = real_option(vm, "current-bandwidth");
     config.speed_bandwidth = real_option(vm, "speed-bandwidth");
@@ -140,6 +142,21 @@ int run_simulate_command(const std::vector<std::string>& args) {
     config.samples_per_state = static_cast<int>(integer_option(vm, "samples", 1, 500));
     config.adc_bits = static_cast<int>(integer_option(vm, "adc-bits", 0, 24));
     config.delay_periods = static_cast<int>(integer_option(vm, "delay", 0, 1));
+}
+
+} // namespace
+
+int run_simulate_command(const std::vector<std::string>& args) {
+    pmsm::SimulatorConfig config;
+    std::string out;
+    const po::options_description options = simulate_options(config, out);
+    po::variables_map vm;
+    if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
+        return exit_ok;
+    if (out.empty())
+        throw std::invalid_argument("--out FILE is required (see mhbench simulate --help)");
+    config.motor = motor_of(vm);
+    configure(vm, config);
 
     const pmsm::Dataset data = pmsm::simulate_dataset(config);
     if (out == "-") {

@@ -18,12 +18,12 @@
 #include <string>
 
 #include "results/store/store.hpp"
-#include "runner/execute_run.hpp"
-#include "runner/parallel_runner.hpp"
-#include "runner/run_identity.hpp"
-#include "runner/shards.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
+#include "runner/distribution/shards.hpp"
+#include "runner/execution/parallel_runner.hpp"
+#include "runner/execution/run_identity.hpp"
+#include "runner/run/execute_run.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
 
 namespace {
 namespace fs = std::filesystem;

@@ -13,10 +13,10 @@
 #include <string>
 
 #include "results/store/store.hpp"
-#include "runner/parallel_runner.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
-#include "runner/study_presets.hpp"
+#include "runner/execution/parallel_runner.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
+#include "runner/study/study_presets.hpp"
 
 namespace {
 

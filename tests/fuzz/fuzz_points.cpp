@@ -1,5 +1,5 @@
-// Fuzzes the points reader of `mhbench eval` (runner/points_reader.hpp). The first byte gives the
-// problem's dimension (a digit, e.g. "2\n1 2\n", or any byte modulo 16); the rest is the file.
+// Fuzzes the points reader of `mhbench eval` (runner/single_problem/points_reader.hpp). The first byte gives
+// the problem's dimension (a digit, e.g. "2\n1 2\n", or any byte modulo 16); the rest is the file.
 #include <Eigen/Core>
 #include <cmath>
 #include <cstddef>
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "runner/points_reader.hpp"
+#include "runner/single_problem/points_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0)

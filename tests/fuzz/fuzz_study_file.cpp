@@ -1,4 +1,4 @@
-// Fuzzes the study-file reader (runner/study_file.hpp): any text is read, with its errors listed.
+// Fuzzes the study-file reader (runner/study/study_file.hpp): any text is read, with its errors listed.
 // An error-free study of a bounded size is also prepared (validated and built, not run), must give
 // std::invalid_argument or a study, and its study.ini must read back to the same study.ini.
 // PMSM problems are validated but not built (see problems() below).
@@ -12,8 +12,8 @@
 
 #include "problems/core/spec.hpp"
 #include "problems/core/spec_grid.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
 
 namespace {
 

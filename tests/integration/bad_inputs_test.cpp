@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "cli_harness.hpp"
-#include "runner/distributed.hpp"
+#include "runner/distribution/distributed.hpp"
 
 namespace {
 namespace fs = std::filesystem;

@@ -14,8 +14,8 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "cli_harness.hpp"
 #include "problems/problem_registry.hpp"
-#include "runner/context.hpp"
-#include "runner/study_presets.hpp"
+#include "runner/execution/context.hpp"
+#include "runner/study/study_presets.hpp"
 
 namespace {
 

@@ -10,9 +10,9 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "results/store/store.hpp"
-#include "runner/parallel_runner.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
+#include "runner/execution/parallel_runner.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
 #include "support/files.hpp"
 
 namespace mhb {

@@ -14,9 +14,9 @@
 #include "plugin_example/booth_components.hpp"
 #include "problems/problem_registry.hpp"
 #include "results/store/store.hpp"
-#include "runner/parallel_runner.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
+#include "runner/execution/parallel_runner.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
 
 namespace {
 

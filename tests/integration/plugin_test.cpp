@@ -1,4 +1,4 @@
-// Plug-in modules (`--plugin`, runner/plugin_loader.hpp) by the CLI: study.ini, list and eval know
+// Plug-in modules (`--plugin`, runner/plugins/plugin_loader.hpp) by the CLI: study.ini, list and eval know
 // the plug-in; and every refusal is one line and a non-zero exit: a missing file, a file that is
 // not a module, a module without the entry point, another plug-in ABI, another Eigen alignment, a
 // name already taken, and a plug-in rebuilt under a stored study. (The example plug-in built

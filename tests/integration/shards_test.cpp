@@ -6,8 +6,8 @@
 
 #include "cli_harness.hpp"
 #include "problems/core/sha256.hpp"
-#include "runner/shards.hpp"
-#include "runner/study.hpp"
+#include "runner/distribution/shards.hpp"
+#include "runner/study/study.hpp"
 
 namespace {
 namespace fs = std::filesystem;

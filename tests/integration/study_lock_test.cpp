@@ -1,4 +1,4 @@
-// One writer per study directory (runner/study_lock.hpp) with real processes: while one
+// One writer per study directory (runner/execution/study_lock.hpp) with real processes: while one
 // `mhbench run` writes a study, a second run on the same --out and a report into it are each
 // refused in one line naming the first's pid, and change nothing; the first finishes and leaves
 // the records of a clean single run, byte for byte, and no lock file.

@@ -16,11 +16,11 @@
 #include <vector>
 
 #include "results/store/store.hpp"
-#include "runner/mpi/mpi_runner.hpp"
-#include "runner/parallel_runner.hpp"
-#include "runner/shards.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
+#include "runner/distribution/mpi/mpi_runner.hpp"
+#include "runner/distribution/shards.hpp"
+#include "runner/execution/parallel_runner.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
 #include "support/files.hpp"
 
 namespace mhb {

@@ -9,7 +9,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/objective.hpp"
-#include "runner/execute_run.hpp"
+#include "runner/run/execute_run.hpp"
 
 namespace mhb {
 namespace {

@@ -18,7 +18,7 @@
 #include "results/analysis/curve_data.hpp"
 #include "results/analysis/statistics.hpp"
 #include "results/store/csv.hpp"
-#include "runner/execute_run.hpp"
+#include "runner/run/execute_run.hpp"
 
 namespace mhb {
 namespace {

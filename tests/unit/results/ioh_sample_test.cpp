@@ -17,7 +17,7 @@
 #include "problems/problem_registry.hpp"
 #include "results/exports/ioh_export.hpp"
 #include "results/store/csv.hpp"
-#include "runner/execute_run.hpp"
+#include "runner/run/execute_run.hpp"
 
 namespace mhb {
 namespace {

@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "mhb_version.hpp"
-#include "runner/context.hpp"
-#include "runner/progress.hpp"
+#include "runner/execution/context.hpp"
+#include "runner/execution/progress.hpp"
 
 namespace mhb {
 namespace {

@@ -1,4 +1,4 @@
-// runner/distributed.hpp outside MPI: a plain process is rank 0 of 1 and runs the study itself;
+// runner/distribution/distributed.hpp outside MPI: a plain process is rank 0 of 1 and runs the study itself;
 // an MPI launcher is recognised by its environment, and an mhbench built without MPI refuses to
 // be started as several processes (each would write the whole study into one directory).
 #include <cstdlib>
@@ -9,9 +9,9 @@
 #include <string>
 
 #include "results/store/store.hpp"
-#include "runner/distributed.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
+#include "runner/distribution/distributed.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
 #include "support/files.hpp"
 
 namespace mhb {

@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "problems/objective.hpp"
-#include "runner/execute_run.hpp"
-#include "runner/study.hpp"
+#include "runner/run/execute_run.hpp"
+#include "runner/study/study.hpp"
 #include "tests/unit/runner/test_problem.hpp"
 
 namespace mhb {

@@ -2,7 +2,7 @@
 // every row of tests/data/implementation_versions.csv names a component, its version, a spec and
 // the number that version gives for it (an optimiser: best_f of one fixed short run on rastrigin;
 // a problem: f at a fixed interior point), with 17 significant digits. The version is part of every
-// run's identity (runner/run_identity.hpp), so numbers that change without a bump would let a study
+// run's identity (runner/execution/run_identity.hpp), so numbers that change without a bump would let a study
 // mix old and new runs under one identity: this test is what makes a developer bump it.
 //
 // MHB_PRINT_GOLDEN=1 prints the rows this build computes (to write new rows, after a bump).
@@ -17,8 +17,8 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/problem_registry.hpp"
 #include "results/store/csv.hpp"
-#include "runner/execute_run.hpp"
-#include "runner/study.hpp"
+#include "runner/run/execute_run.hpp"
+#include "runner/study/study.hpp"
 
 namespace mhb {
 namespace {

@@ -1,11 +1,11 @@
-// runner/launcher_environment.hpp with fake environments: every launcher that starts several
+// runner/distribution/launcher_environment.hpp with fake environments: every launcher that starts several
 // processes is recognised (so a build without MPI can refuse it), and the single-process jobs
 // of a scheduler (a batch script, a job-array task, srun -n 1) are not taken for one.
 #include <gtest/gtest.h>
 #include <map>
 #include <string>
 
-#include "runner/launcher_environment.hpp"
+#include "runner/distribution/launcher_environment.hpp"
 
 namespace mhb {
 namespace {

@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "results/store/store.hpp"
-#include "runner/parallel_runner.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
+#include "runner/execution/parallel_runner.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
 #include "support/files.hpp"
 #include "tests/unit/runner/test_problem.hpp"
 

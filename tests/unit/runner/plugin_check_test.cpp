@@ -8,7 +8,7 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/sampling.hpp"
 #include "problems/problem_registry.hpp"
-#include "runner/plugin_check.hpp"
+#include "runner/plugins/plugin_check.hpp"
 
 namespace mhb {
 namespace {

@@ -1,4 +1,4 @@
-// The plug-in loader's checks (runner/plugin_loader.hpp): the build settings of a plug-in and of
+// The plug-in loader's checks (runner/plugins/plugin_loader.hpp): the build settings of a plug-in and of
 // mhbench are compared setting by setting, naming the first that differs; a missing module is one
 // line. The refusals of real modules are in tests/integration/plugin_test.cpp, module hashes in
 // run identities in run_identity_versions_test.cpp.
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "runner/plugin_api.hpp"
-#include "runner/plugin_loader.hpp"
+#include "runner/plugins/plugin_loader.hpp"
 
 namespace mhb {
 namespace {

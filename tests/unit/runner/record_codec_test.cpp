@@ -1,4 +1,4 @@
-// The record codec as the MPI runner uses it (runner/mpi/): a record that crosses from a rank to
+// The record codec as the MPI runner uses it (runner/distribution/mpi/): a record that crosses from a rank to
 // the writer comes back exactly, every double bit for bit (NaN payloads, -0.0, infinities), every
 // optional set or unset as it was, so that `mpirun -np N mhbench run` writes the bytes one process
 // writes. Bytes cut short or left over throw std::runtime_error rather than giving a record.

@@ -1,7 +1,7 @@
 // Implementation versions in run identities: version 1 leaves a run's identity as it was before
 // versions existed (stored studies keep working), a bump changes it, and extending a study whose
 // stored runs came from another version is refused naming the component and both versions,
-// unless the runs are to be computed again. Likewise a plug-in module's SHA-256 (runner/
+// unless the runs are to be computed again. Likewise a plug-in module's SHA-256 (runner/plugins/
 // plugin_loader.hpp): it joins the identity of its components' runs, built-in ones keep theirs.
 #include <gtest/gtest.h>
 #include <stdexcept>
@@ -9,9 +9,9 @@
 
 #include "problems/core/sha256.hpp"
 #include "results/store/store.hpp"
-#include "runner/execute_run.hpp"
-#include "runner/run_identity.hpp"
-#include "runner/study.hpp"
+#include "runner/execution/run_identity.hpp"
+#include "runner/run/execute_run.hpp"
+#include "runner/study/study.hpp"
 #include "tests/support/files.hpp"
 
 namespace mhb {

@@ -6,13 +6,13 @@
 #include <gtest/gtest.h>
 #include <stdexcept>
 
-#include "runner/calibration.hpp"
-#include "runner/execute_run.hpp"
-#include "runner/run_identity.hpp"
-#include "runner/shards.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
-#include "runner/study_options.hpp"
+#include "runner/distribution/shards.hpp"
+#include "runner/execution/run_identity.hpp"
+#include "runner/run/execute_run.hpp"
+#include "runner/study/calibration.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
+#include "runner/study/study_options.hpp"
 
 namespace mhb {
 namespace {

@@ -6,11 +6,11 @@
 #include <set>
 
 #include "problems/core/rng.hpp"
-#include "runner/calibration.hpp"
-#include "runner/execute_run.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
-#include "runner/study_presets.hpp"
+#include "runner/run/execute_run.hpp"
+#include "runner/study/calibration.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
+#include "runner/study/study_presets.hpp"
 
 namespace mhb {
 namespace {

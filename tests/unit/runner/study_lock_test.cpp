@@ -1,4 +1,4 @@
-// runner/study_lock.hpp: one holder at a time, the file names it, a second taker is refused with
+// runner/execution/study_lock.hpp: one holder at a time, the file names it, a second taker is refused with
 // the holder's pid and touches nothing, and a lock whose holder died (kill -9) is taken over.
 #include <csignal>
 #include <filesystem>
@@ -8,7 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "runner/study_lock.hpp"
+#include "runner/execution/study_lock.hpp"
 #include "support/files.hpp"
 
 namespace mhb {

@@ -8,9 +8,9 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/core/rng.hpp"
 #include "problems/problem_registry.hpp"
-#include "runner/study.hpp"
-#include "runner/study_file.hpp"
-#include "runner/study_presets.hpp"
+#include "runner/study/study.hpp"
+#include "runner/study/study_file.hpp"
+#include "runner/study/study_presets.hpp"
 #include "tests/unit/runner/test_problem.hpp"
 
 namespace mhb {

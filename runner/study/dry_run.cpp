@@ -1,0 +1,86 @@
+#include "runner/study/dry_run.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "results/analysis/cec_protocol.hpp"
+#include "results/store/store.hpp"
+#include "runner/study/calibration.hpp"
+
+namespace mhb {
+
+namespace {
+
+std::string count_text(double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, value < 1e6 ? "%.0f" : "%.3g", value);
+    return text;
+}
+
+} // namespace
+
+std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::path& dir, int threads) {
+    std::ostringstream out;
+    const Study& s = prepared.study;
+    out << "mhbench run --dry-run: nothing is run or written.\n\n"
+        << "study: " << prepared.optimizers.size() << " algorithms x " << prepared.problems.size()
+        << " problems x " << s.budgets.size() << " budget" << (s.budgets.size() == 1 ? "" : "s") << " x "
+        << s.runs << " runs = " << prepared.run_count() << " runs; seed " << s.seed << ", seeds "
+        << seed_mode_name(s.seeds)
+        << (s.seeds == SeedMode::common ? " (every algorithm starts run r from the same stream)\n"
+                                        : " (each algorithm its own streams)\n");
+    std::size_t width = 5;
+    for (const auto& a : prepared.algorithms)
+        width = std::max(width, a.label.size());
+    out << "\nalgorithms (label, canonical spec):\n";
+    for (const auto& a : prepared.algorithms)
+        out << "  " << a.label << std::string(width - a.label.size() + 2, ' ') << a.spec << '\n';
+    out << "\nproblems (" << prepared.problem_specs.size() << "):\n";
+    const std::size_t shown = prepared.problem_specs.size() > 12 ? 10 : prepared.problem_specs.size();
+    for (std::size_t p = 0; p < shown; ++p)
+        out << "  " << prepared.problem_specs[p] << '\n';
+    if (shown < prepared.problem_specs.size())
+        out << "  ... and " << prepared.problem_specs.size() - shown << " more, to "
+            << prepared.problem_specs.back() << '\n';
+    const StudyEstimate estimate = estimate_study(prepared);
+    out << "\nbudgets:\n";
+    for (std::size_t b = 0; b < s.budgets.size(); ++b) {
+        const auto& e = estimate.budgets[b];
+        out << "  " << prepared.budget_texts[b] << ": " << (e.exact ? "" : "about ")
+            << count_text(e.evaluations) << " evaluations";
+        if (s.budgets[b].evaluations_by_dimension) { // what a run gets at each dimension of the study
+            std::set<std::int64_t> dimensions;
+            for (const auto& problem : prepared.problems)
+                dimensions.insert(problem->dimension());
+            out << " (per run:";
+            for (const std::int64_t d : dimensions)
+                out << (d == *dimensions.begin() ? " " : ", ")
+                    << count_text(static_cast<double>(*s.budgets[b].for_dimension(d).max_evaluations))
+                    << " at D = " << d;
+            out << ")";
+        }
+        out << '\n';
+    }
+    if (const CecProtocol* protocol = find_cec_protocol(s.protocol))
+        out << "\nprotocol: " << s.protocol << " (" << protocol->title
+            << "): the report adds the competition's tables per dimension and the organisers' result files "
+               "(report/cec/)\n";
+    const double seconds = estimate.cpu_seconds() / std::max(threads, 1);
+    char line[160];
+    std::snprintf(line, sizeof line, "%s evaluations, roughly %.3g s on %d thread%s",
+                  count_text(estimate.evaluations()).c_str(), seconds, threads, threads == 1 ? "" : "s");
+    out << "\ntotal: " << line << " (calibrated on " << estimate.calibration_runs << " short runs)\n";
+    out << "output: " << dir.string();
+    if (std::filesystem::exists(dir / StudyFiles::store))
+        out << " (holds a study store: runs of this study found in it are not run again)\n";
+    else if (std::filesystem::exists(dir / StudyFiles::runs) ||
+             std::filesystem::exists(dir / StudyFiles::journal))
+        out << " (holds a study of an earlier mhbench: the run needs --overwrite or another --out)\n";
+    else
+        out << '\n';
+    return out.str();
+}
+
+} // namespace mhb

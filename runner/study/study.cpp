@@ -1,0 +1,407 @@
+#include "runner/study/study.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "problems/core/parameters.hpp"
+#include "problems/core/rng.hpp"
+#include "problems/core/spec.hpp"
+#include "problems/core/spec_grid.hpp"
+#include "results/analysis/cec_protocol.hpp"
+
+namespace mhb {
+namespace {
+
+// An error message may hold several lines (validate_parameters joins all of a spec's problems);
+// each becomes its own entry, prefixed with where the spec was written.
+void add_lines(std::vector<std::string>& errors, const std::string& origin, const std::string& text) {
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const auto end = std::min(text.find('\n', start), text.size());
+        if (end > start)
+            errors.push_back((origin.empty() ? "" : origin + ": ") + text.substr(start, end - start));
+        start = end + 1;
+    }
+}
+
+void check_budget(const StudyBudget& budget, std::vector<std::string>& errors) {
+    if (!budget.max_evaluations && !budget.max_iterations && !budget.evaluations_by_dimension)
+        errors.emplace_back("budget: give a number of iterations or of evaluations (or both)");
+    if (budget.max_iterations && *budget.max_iterations <= 0)
+        errors.push_back("budget: iterations = " + std::to_string(*budget.max_iterations) +
+                         " is outside [1, inf)");
+    if (budget.max_evaluations && *budget.max_evaluations <= 0)
+        errors.push_back("budget: evaluations = " + std::to_string(*budget.max_evaluations) +
+                         " is outside [1, inf)");
+    if (budget.target_error && !(std::isfinite(*budget.target_error) && *budget.target_error >= 0.0))
+        errors.push_back("budget: target = " + format_real(*budget.target_error) + " is outside [0, inf)");
+}
+
+std::string origin_of(const std::vector<std::string>& origins, std::size_t i) {
+    return i < origins.size() ? origins[i] : std::string();
+}
+
+// `spec` with its display name attached, as study files store it.
+std::string with_label(const std::string& spec, const std::string& label) {
+    if (label == spec)
+        return spec;
+    return spec + (spec.find(':') == std::string::npos ? ":" : ",") + "label=" + label;
+}
+
+// The readable name of one variant of a grid: the name with the braced values, booleans as a
+// letter and a sign (itlbo[T+S-O+]), other values as key=value (pso[w=0.4]).
+std::string grid_label(const AlgorithmRegistry::Entry& entry,
+                       const std::vector<std::pair<std::string, std::string>>& varying) {
+    std::vector<std::pair<std::string, std::string>> switches; // key, normal value
+    std::vector<std::string> others;
+    for (const auto& [key, value] : varying) {
+        const ParameterInfo& p = AlgorithmRegistry::declaration(entry, key);
+        if (p.kind == ParameterKind::boolean)
+            switches.emplace_back(key, normal_value(p, value));
+        else
+            others.push_back(key + "=" + normal_value(p, value));
+    }
+    // One capital letter per switch while the letters tell them apart; the whole key otherwise.
+    bool letters_unique = true;
+    for (std::size_t i = 0; i < switches.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            letters_unique = letters_unique && switches[i].first[0] != switches[j].first[0];
+    std::string inside;
+    for (const auto& [key, value] : switches) {
+        const std::string sign = value == "on" ? "+" : "-";
+        if (letters_unique)
+            inside += static_cast<char>(std::toupper(static_cast<unsigned char>(key[0]))) + sign;
+        else
+            inside += (inside.empty() ? "" : ",") + key + sign;
+    }
+    for (const auto& o : others)
+        inside += (inside.empty() ? "" : ",") + o;
+    return entry.name + "[" + inside + "]";
+}
+
+// Expands the algorithm specs (grids, labels), validates and builds each optimiser.
+void prepare_algorithms(const Study& study, const AlgorithmRegistry& registry, PreparedStudy& prepared,
+                        std::vector<std::string>& errors) {
+    if (study.algorithms.empty())
+        errors.emplace_back("no algorithm given");
+    std::map<std::string, std::string> where_spec;  // canonical spec -> the text that gave it
+    std::map<std::string, std::string> where_label; // label -> canonical spec
+    for (std::size_t i = 0; i < study.algorithms.size(); ++i) {
+        const std::string origin = origin_of(study.algorithm_origins, i);
+        std::vector<GridVariant> variants;
+        try {
+            variants = expand_grid(study.algorithms[i]);
+        } catch (const std::invalid_argument& e) {
+            add_lines(errors, origin, std::string("algorithm ") + e.what());
+            continue;
+        }
+        for (const auto& variant : variants) {
+            Spec spec;
+            try {
+                spec = Spec::parse(variant.text);
+            } catch (const std::invalid_argument& e) {
+                add_lines(errors, origin, std::string("algorithm ") + e.what());
+                continue;
+            }
+            try {
+                std::string label;
+                if (const std::string* given = spec.find("label")) {
+                    label = *given;
+                    std::erase_if(spec.parameters, [](const auto& kv) { return kv.first == "label"; });
+                    if (variants.size() > 1) {
+                        add_lines(errors, origin,
+                                  spec.name + ": label '" + label + "' would name all " +
+                                      std::to_string(variants.size()) +
+                                      " variants of the grid; leave it out (each variant gets a label of its "
+                                      "own) or write the variants one by one");
+                        break;
+                    }
+                }
+                const AlgorithmRegistry::Entry& entry = registry.find(spec.name);
+                const std::string canonical = registry.minimal(spec).canonical();
+                if (label.empty())
+                    label = variant.varying.empty() ? canonical : grid_label(entry, variant.varying);
+                if (const auto seen = where_spec.find(canonical); seen != where_spec.end()) {
+                    // The same optimiser twice would repeat the same runs, counted twice.
+                    errors.push_back((origin.empty() ? "" : origin + ": ") + "algorithm '" + variant.text +
+                                     "' is the same optimiser as '" + seen->second + "' (both are '" +
+                                     canonical + "')");
+                    continue;
+                }
+                if (const auto seen = where_label.find(label); seen != where_label.end()) {
+                    errors.push_back((origin.empty() ? "" : origin + ": ") + "algorithm label '" + label +
+                                     "' names both '" + seen->second + "' and '" + canonical + "'");
+                    continue;
+                }
+                where_spec[canonical] = variant.text;
+                where_label[label] = canonical;
+                prepared.optimizers.push_back(registry.create(spec));
+                prepared.algorithm_specs.push_back(canonical);
+                prepared.algorithm_versions.push_back(entry.version);
+                prepared.algorithm_modules.push_back({entry.module_path, entry.module_sha256});
+                prepared.algorithms.push_back({canonical, label, registry.full(spec).canonical()});
+                prepared.study.algorithms.push_back(with_label(canonical, label));
+            } catch (const std::exception& e) {
+                add_lines(errors, origin, e.what());
+            }
+        }
+    }
+}
+
+// `spec` with a relative `data=` path made absolute, so that a study file written into the study
+// directory reads the same data from wherever it is used. Paths joined by '+' are each resolved.
+Spec with_absolute_data_paths(Spec spec) {
+    for (auto& [key, value] : spec.parameters) {
+        if (key != "data")
+            continue;
+        std::string joined;
+        std::size_t start = 0;
+        while (start <= value.size()) {
+            const auto end = std::min(value.find('+', start), value.size());
+            std::filesystem::path path = value.substr(start, end - start);
+            if (!path.empty() && path.is_relative())
+                path = std::filesystem::absolute(path).lexically_normal();
+            if (!joined.empty())
+                joined += '+';
+            joined += path.string();
+            start = end + 1;
+        }
+        value = joined;
+    }
+    return spec;
+}
+
+// The canonical spec with each data file named by its content ("data=sha256:..."), not its path:
+// what a problem's runs depend on.
+std::string content_identity(Spec spec, const std::vector<DataFile>& files) {
+    if (files.empty())
+        return spec.canonical();
+    std::string hashes;
+    for (const auto& file : files)
+        hashes.append(hashes.empty() ? "sha256:" : "+sha256:").append(file.sha256);
+    for (auto& [key, value] : spec.parameters)
+        if (key == "data")
+            value = hashes;
+    return spec.canonical();
+}
+
+// Expands the problem specs (grids, then ranges), validates and builds each problem.
+void prepare_problems(const Study& study, const ProblemRegistry& registry, PreparedStudy& prepared,
+                      std::vector<std::string>& errors) {
+    if (study.problems.empty())
+        errors.emplace_back("no problem given");
+    std::map<std::string, std::string> where_full; // full spec -> canonical spec that gave it
+    for (std::size_t i = 0; i < study.problems.size(); ++i) {
+        const std::string origin = origin_of(study.problem_origins, i);
+        std::vector<GridVariant> variants;
+        try {
+            variants = expand_grid(study.problems[i]);
+        } catch (const std::invalid_argument& e) {
+            add_lines(errors, origin, std::string("problem ") + e.what());
+            continue;
+        }
+        for (const auto& variant : variants) {
+            Spec written;
+            try {
+                written = Spec::parse(variant.text);
+            } catch (const std::invalid_argument& e) {
+                add_lines(errors, origin, std::string("problem ") + e.what());
+                continue;
+            }
+            prepared.study.problems.push_back(with_absolute_data_paths(written).canonical());
+            std::vector<Spec> expanded;
+            try {
+                // Canonical order first, so that `f=1-3,i=1-2` and `i=1-2,f=1-3` number runs alike.
+                expanded = registry.expand(Spec::parse(written.canonical()));
+            } catch (const std::exception& e) {
+                add_lines(errors, origin, e.what());
+                continue;
+            }
+            for (const Spec& one : expanded) {
+                try {
+                    const std::string canonical = registry.normalised(one).canonical();
+                    const std::string full = registry.full(one).canonical();
+                    if (const auto seen = where_full.find(full); seen != where_full.end()) {
+                        errors.push_back((origin.empty() ? "" : origin + ": ") + "problem '" + canonical +
+                                         "' is the same problem as '" + seen->second + "'");
+                        continue;
+                    }
+                    where_full[full] = canonical;
+                    prepared.problems.push_back(registry.create(one));
+                    prepared.problem_specs.push_back(canonical);
+                    prepared.problem_versions.push_back(registry.find(one.name).version);
+                    prepared.problem_modules.push_back(
+                        {registry.find(one.name).module_path, registry.find(one.name).module_sha256});
+                    prepared.problem_identities.push_back(
+                        content_identity(Spec::parse(canonical), prepared.problems.back()->data_files()));
+                } catch (const std::exception& e) {
+                    add_lines(errors, origin, e.what());
+                }
+            }
+        }
+    }
+}
+
+// Evaluations by dimension must list every problem's dimension: said once per budget and dimension.
+void check_dimension_budgets(const PreparedStudy& prepared, std::vector<std::string>& errors) {
+    for (const StudyBudget& budget : prepared.study.budgets) {
+        if (!budget.evaluations_by_dimension)
+            continue;
+        std::map<std::int64_t, std::pair<std::string, std::size_t>> missing; // D -> first problem, count
+        std::set<std::int64_t> too_many; // N x D beyond the most a budget may give, said once per D
+        for (std::size_t p = 0; p < prepared.problems.size(); ++p) {
+            const std::int64_t dimension = prepared.problems[p]->dimension();
+            try {
+                if (budget.evaluations_by_dimension->at(dimension))
+                    continue;
+            } catch (const std::invalid_argument& e) {
+                if (too_many.insert(dimension).second)
+                    errors.emplace_back(e.what());
+                continue;
+            }
+            auto& [first, count] = missing[dimension];
+            if (count++ == 0)
+                first = prepared.problem_specs[p];
+        }
+        for (const auto& [dimension, first_and_count] : missing)
+            errors.push_back("budget '" + budget_text(budget) + "' gives no evaluations at dimension " +
+                             std::to_string(dimension) + " (problem '" + first_and_count.first + "'" +
+                             (first_and_count.second > 1
+                                  ? " and " + std::to_string(first_and_count.second - 1) + " more"
+                                  : std::string()) +
+                             "); it lists " + budget.evaluations_by_dimension->dimensions_text());
+    }
+}
+
+// A protocol names its suite and records errors at fractions of the evaluation budget.
+void check_protocol(const PreparedStudy& prepared, std::vector<std::string>& errors) {
+    const std::string& name = prepared.study.protocol;
+    if (name.empty())
+        return;
+    const CecProtocol* protocol = find_cec_protocol(name);
+    if (protocol == nullptr) {
+        errors.push_back("protocol = " + name + " is not one of " + cec_protocol_names());
+        return;
+    }
+    std::size_t others = 0;
+    std::string first;
+    for (const auto& problem : prepared.problem_specs)
+        if (Spec::parse(problem).name != protocol->family && others++ == 0)
+            first = problem;
+    if (others > 0)
+        errors.push_back("protocol " + name + ": " +
+                         (others > 1
+                              ? "problems '" + first + "' and " + std::to_string(others - 1) + " more are"
+                              : "problem '" + first + "' is") +
+                         " not of the " + std::string(protocol->family) +
+                         " suite; the protocol's tables and result files cover its functions only (write " +
+                         std::string(protocol->family) + ":f=...,dim=...)");
+    for (const StudyBudget& budget : prepared.study.budgets)
+        if (!budget.max_evaluations && !budget.evaluations_by_dimension)
+            errors.push_back("protocol " + name + ": budget '" + budget_text(budget) +
+                             "' gives no evaluation count; the protocol records errors at fractions of it "
+                             "(write evaluations=" +
+                             std::string(protocol->evaluations) + ")");
+}
+
+} // namespace
+
+std::string_view seed_mode_name(SeedMode mode) {
+    return mode == SeedMode::common ? "common" : "per-algorithm";
+}
+
+std::int64_t PreparedStudy::run_count() const {
+    return static_cast<std::int64_t>(problems.size() * optimizers.size() * study.budgets.size()) * study.runs;
+}
+
+PreparedStudy::RunCell PreparedStudy::cell(std::int64_t run_id) const {
+    if (run_id < 0 || run_id >= run_count())
+        throw std::out_of_range("run_id " + std::to_string(run_id) + " is outside [0, " +
+                                std::to_string(run_count()) + ")");
+    const auto algorithm_count = static_cast<std::int64_t>(optimizers.size());
+    const auto problem_count = static_cast<std::int64_t>(problems.size());
+    const std::int64_t pair = run_id / study.runs; // (budget * problems + problem) * algorithms + algorithm
+    RunCell c;
+    c.algorithm = static_cast<std::size_t>(pair % algorithm_count);
+    c.problem = static_cast<std::size_t>((pair / algorithm_count) % problem_count);
+    c.budget = static_cast<std::size_t>(pair / algorithm_count / problem_count);
+    c.run_index = run_id % study.runs;
+    return c;
+}
+
+RunRequest PreparedStudy::request(std::int64_t run_id) const {
+    const RunCell c = cell(run_id);
+    const std::size_t a = c.algorithm;
+    const std::size_t p = c.problem;
+    RunRequest r;
+    r.optimizer = optimizers[a].get();
+    r.problem = problems[p].get();
+    r.algorithm_spec = algorithm_specs[a];
+    r.problem_spec = problem_specs[p];
+    r.run_id = run_id;
+    r.run_index = c.run_index;
+    const auto index = static_cast<std::uint64_t>(c.run_index);
+    r.seed = study.seeds == SeedMode::common
+                 ? derive_seed(study.seed, problem_identities[p], index)
+                 : derive_seed(study.seed, algorithm_specs[a], problem_identities[p], index);
+    r.budget = study.budgets[c.budget].for_dimension(problems[p]->dimension());
+    r.budget_text = budget_texts[c.budget];
+    return r;
+}
+
+PreparedStudy prepare_study(const Study& study, const AlgorithmRegistry& algorithms,
+                            const ProblemRegistry& problems) {
+    std::vector<std::string> errors;
+    PreparedStudy prepared;
+    prepared.study = study;
+    prepared.study.algorithms.clear();
+    prepared.study.problems.clear();
+    prepared.study.algorithm_origins.clear();
+    prepared.study.problem_origins.clear();
+
+    prepare_algorithms(study, algorithms, prepared, errors);
+    prepare_problems(study, problems, prepared, errors);
+
+    if (study.runs < 1 || study.runs > max_runs_per_pair)
+        errors.push_back("study: runs = " + std::to_string(study.runs) + " is outside [1, " +
+                         std::to_string(max_runs_per_pair) + "]");
+    if (study.budgets.empty())
+        errors.emplace_back("budget: give a number of iterations or of evaluations (or both)");
+    for (const StudyBudget& budget : study.budgets) {
+        check_budget(budget, errors);
+        const std::string text = budget_text(budget);
+        if (std::find(prepared.budget_texts.begin(), prepared.budget_texts.end(), text) !=
+            prepared.budget_texts.end())
+            errors.push_back("budget '" + text + "' is listed twice");
+        prepared.budget_texts.push_back(text);
+    }
+    check_dimension_budgets(prepared, errors);
+    check_protocol(prepared, errors);
+    // A target needs f*; said once per problem, however many budgets set one.
+    if (std::any_of(study.budgets.begin(), study.budgets.end(),
+                    [](const Budget& b) { return b.target_error; }))
+        for (std::size_t p = 0; p < prepared.problems.size(); ++p)
+            if (prepared.problems[p] && !prepared.problems[p]->known_optimum())
+                errors.push_back("budget: a target needs a known optimum; problem '" +
+                                 prepared.problem_specs[p] + "' has none");
+    if (!errors.empty()) {
+        std::string joined;
+        for (const auto& e : errors)
+            joined += (joined.empty() ? "" : "\n") + e;
+        throw std::invalid_argument(joined);
+    }
+
+    for (const auto& problem : prepared.problems)
+        for (const auto& name : problem->parameter_names())
+            if (std::find(prepared.parameter_columns.begin(), prepared.parameter_columns.end(), name) ==
+                prepared.parameter_columns.end())
+                prepared.parameter_columns.push_back(name);
+    return prepared;
+}
+
+} // namespace mhb
