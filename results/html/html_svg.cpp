@@ -127,7 +127,7 @@ std::size_t parse_tag(std::string_view text, std::size_t at, std::string& name,
     return text.size();
 }
 
-std::string quoted(const std::string& value) {
+std::string attribute_value(const std::string& value) {
     std::string out = "\"";
     for (char c : value)
         out += c == '"' ? std::string("&quot;") : std::string(1, c);
@@ -176,7 +176,7 @@ std::string inline_svg(std::string_view svg_text, const std::string& prefix, con
             i = parse_tag(text, i, name, attributes, self_closing);
             out += '<' + name;
             if (first_tag)
-                out += " id=" + quoted(html_escape(prefix)) + " role=\"img\"";
+                out += " id=" + attribute_value(html_escape(prefix)) + " role=\"img\"";
             for (auto& a : attributes) {
                 if (first_tag && (a.name == "id" || a.name == "role"))
                     continue;
@@ -185,7 +185,7 @@ std::string inline_svg(std::string_view svg_text, const std::string& prefix, con
                     continue;
                 out += ' ' + kept.name;
                 if (kept.has_value)
-                    out += '=' + quoted(kept.value);
+                    out += '=' + attribute_value(kept.value);
             }
             out += self_closing ? "/>" : ">";
             if (first_tag && !has_title && !self_closing)
