@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "problems/core/stable_hash.hpp"
 #include "results/store/csv.hpp"
 
 namespace mhb {
@@ -35,16 +36,6 @@ const char* const classic_names[] = {
 
 constexpr int pmsm_id = 200;
 constexpr int variant_scale = 1000000; // base * variant_scale + 1 + hash % (variant_scale - 1)
-
-// FNV-1a, 64 bits: stable across platforms and runs (std::hash is neither).
-std::uint64_t fnv1a(const std::string& text) {
-    std::uint64_t h = 14695981039346656037ULL;
-    for (const char c : text) {
-        h ^= static_cast<unsigned char>(c);
-        h *= 1099511628211ULL;
-    }
-    return h;
-}
 
 // Names go into file names: no path separators, spaces or other punctuation.
 std::string file_name_part(const std::string& text) {
@@ -207,7 +198,7 @@ IohFunction ioh_function(const std::string& problem_spec) {
             base = 101 + static_cast<int>(found - std::begin(classic_names));
     }
     if (base == 0) // a family the table does not know (or bbob with an f it does not have)
-        base = 300 + static_cast<int>(fnv1a(spec.name) % 700);
+        base = 300 + static_cast<int>(stable_hash(spec.name) % 700);
     if (out.name.empty())
         out.name = file_name_part(spec.name);
 
@@ -228,12 +219,13 @@ IohFunction ioh_function(const std::string& problem_spec) {
     }
     out.id = base;
     if (!others.empty()) {
-        out.id = base * variant_scale + 1 + static_cast<int>(fnv1a(others) % (variant_scale - 1));
+        out.id = base * variant_scale + 1 + static_cast<int>(stable_hash(others) % (variant_scale - 1));
         // File names stay short: a long list of parameters is cut and keeps its hash.
         constexpr std::size_t longest = 120;
         if (out.name.size() + suffix.size() > longest) {
             char hash[20];
-            std::snprintf(hash, sizeof hash, "_%016llx", static_cast<unsigned long long>(fnv1a(others)));
+            std::snprintf(hash, sizeof hash, "_%016llx",
+                          static_cast<unsigned long long>(stable_hash(others)));
             suffix = suffix.substr(0, longest - std::min(longest, out.name.size() + 17)) + hash;
         }
         out.name += suffix;
