@@ -14,10 +14,9 @@
 #include <cstdint>
 #include <string_view>
 
-namespace mhb {
+#include "problems/core/stable_hash.hpp" // stable_hash, which seeds the streams
 
-// FNV-1a, 64 bit: stable across runs, compilers and platforms (unlike std::hash).
-std::uint64_t stable_hash(std::string_view text) noexcept;
+namespace mhb {
 
 // SplitMix64's finaliser: a bijective mix of 64 bits.
 std::uint64_t mix64(std::uint64_t x) noexcept;

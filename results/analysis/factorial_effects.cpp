@@ -138,6 +138,74 @@ std::string FactorialDesign::description() const {
     return name + ": " + join(factors, " x ") + " (2^" + std::to_string(factors.size()) + ")";
 }
 
+namespace {
+
+// The parameters that vary among the variants, each an on/off switch in every full spec; `why_not`
+// says why not when one is missing from a spec or varies otherwise.
+std::vector<std::string> varying_switches(const std::vector<SpecText>& specs, std::string& why_not) {
+    std::set<std::string> keys;
+    for (const auto& s : specs)
+        for (const auto& [key, value] : s.parameters)
+            keys.insert(key);
+    std::vector<std::string> factors;
+    for (const auto& key : keys) {
+        std::set<std::string> values;
+        for (const auto& s : specs) {
+            const auto it = s.parameters.find(key);
+            if (it == s.parameters.end()) {
+                why_not = "parameter '" + key + "' is missing from the full spec of some variant";
+                return {};
+            }
+            values.insert(it->second);
+        }
+        if (values.size() == 1)
+            continue;
+        for (const auto& v : values)
+            if (v != "on" && v != "off") {
+                why_not = "parameter '" + key + "' varies (" + join({values.begin(), values.end()}, ", ") +
+                          ") and is not an on/off switch";
+                return {};
+            }
+        factors.push_back(key);
+    }
+    return factors;
+}
+
+// The variant of each combination of the switches (bit j: factor j on); `why_not` says why not when
+// a combination appears twice or is missing.
+std::vector<std::string> variants_by_combination(const std::vector<std::string>& algorithms,
+                                                 const std::vector<SpecText>& specs,
+                                                 const std::vector<std::string>& factors,
+                                                 std::string& why_not) {
+    const std::size_t variants = std::size_t{1} << factors.size();
+    std::vector<std::string> by_combination(variants);
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        std::size_t m = 0;
+        for (std::size_t j = 0; j < factors.size(); ++j)
+            if (specs[i].parameters.at(factors[j]) == "on")
+                m |= std::size_t{1} << j;
+        if (!by_combination[m].empty()) {
+            why_not = "combination " + combination_text(factors, m) + " appears twice (" + by_combination[m] +
+                      ", " + algorithms[i] + ")";
+            return {};
+        }
+        by_combination[m] = algorithms[i];
+    }
+    std::vector<std::string> missing;
+    for (std::size_t m = 0; m < variants; ++m)
+        if (by_combination[m].empty())
+            missing.push_back(combination_text(factors, m));
+    if (!missing.empty()) {
+        why_not = std::to_string(algorithms.size()) + " variants for " + std::to_string(factors.size()) +
+                  " on/off switches (" + join(factors, ", ") + ") need " + std::to_string(variants) +
+                  "; missing: " + join(missing, "; ");
+        return {};
+    }
+    return by_combination;
+}
+
+} // namespace
+
 DesignCandidate detect_factorial_design(const std::vector<std::string>& algorithms,
                                         const std::vector<std::string>& full_specs) {
     if (algorithms.size() != full_specs.size())
@@ -160,31 +228,9 @@ DesignCandidate detect_factorial_design(const std::vector<std::string>& algorith
         c.why_not = "a single variant";
         return c;
     }
-    std::set<std::string> keys;
-    for (const auto& s : specs)
-        for (const auto& [key, value] : s.parameters)
-            keys.insert(key);
-    std::vector<std::string> factors;
-    for (const auto& key : keys) {
-        std::set<std::string> values;
-        for (const auto& s : specs) {
-            const auto it = s.parameters.find(key);
-            if (it == s.parameters.end()) {
-                c.why_not = "parameter '" + key + "' is missing from the full spec of some variant";
-                return c;
-            }
-            values.insert(it->second);
-        }
-        if (values.size() == 1)
-            continue;
-        for (const auto& v : values)
-            if (v != "on" && v != "off") {
-                c.why_not = "parameter '" + key + "' varies (" + join({values.begin(), values.end()}, ", ") +
-                            ") and is not an on/off switch";
-                return c;
-            }
-        factors.push_back(key);
-    }
+    const std::vector<std::string> factors = varying_switches(specs, c.why_not);
+    if (!c.why_not.empty())
+        return c;
     if (factors.empty()) {
         c.why_not = "the variants do not differ in any parameter";
         return c;
@@ -193,31 +239,10 @@ DesignCandidate detect_factorial_design(const std::vector<std::string>& algorith
         c.why_not = std::to_string(factors.size()) + " varying switches: too many for a full factorial";
         return c;
     }
-    const std::size_t variants = std::size_t{1} << factors.size();
-    std::vector<std::string> by_combination(variants);
-    for (std::size_t i = 0; i < specs.size(); ++i) {
-        std::size_t m = 0;
-        for (std::size_t j = 0; j < factors.size(); ++j)
-            if (specs[i].parameters.at(factors[j]) == "on")
-                m |= std::size_t{1} << j;
-        if (!by_combination[m].empty()) {
-            c.why_not = "combination " + combination_text(factors, m) + " appears twice (" +
-                        by_combination[m] + ", " + algorithms[i] + ")";
-            return c;
-        }
-        by_combination[m] = algorithms[i];
-    }
-    std::vector<std::string> missing;
-    for (std::size_t m = 0; m < variants; ++m)
-        if (by_combination[m].empty())
-            missing.push_back(combination_text(factors, m));
-    if (!missing.empty()) {
-        c.why_not = std::to_string(algorithms.size()) + " variants for " + std::to_string(factors.size()) +
-                    " on/off switches (" + join(factors, ", ") + ") need " + std::to_string(variants) +
-                    "; missing: " + join(missing, "; ");
+    std::vector<std::string> by_combination = variants_by_combination(algorithms, specs, factors, c.why_not);
+    if (!c.why_not.empty())
         return c;
-    }
-    c.design = FactorialDesign{c.name, factors, by_combination};
+    c.design = FactorialDesign{c.name, factors, std::move(by_combination)};
     return c;
 }
 

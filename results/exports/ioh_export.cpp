@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "problems/core/stable_hash.hpp"
 #include "results/store/csv.hpp"
 
 namespace mhb {
@@ -35,16 +36,6 @@ const char* const classic_names[] = {
 
 constexpr int pmsm_id = 200;
 constexpr int variant_scale = 1000000; // base * variant_scale + 1 + hash % (variant_scale - 1)
-
-// FNV-1a, 64 bits: stable across platforms and runs (std::hash is neither).
-std::uint64_t fnv1a(const std::string& text) {
-    std::uint64_t h = 14695981039346656037ULL;
-    for (const char c : text) {
-        h ^= static_cast<unsigned char>(c);
-        h *= 1099511628211ULL;
-    }
-    return h;
-}
 
 // Names go into file names: no path separators, spaces or other punctuation.
 std::string file_name_part(const std::string& text) {
@@ -207,7 +198,7 @@ IohFunction ioh_function(const std::string& problem_spec) {
             base = 101 + static_cast<int>(found - std::begin(classic_names));
     }
     if (base == 0) // a family the table does not know (or bbob with an f it does not have)
-        base = 300 + static_cast<int>(fnv1a(spec.name) % 700);
+        base = 300 + static_cast<int>(stable_hash(spec.name) % 700);
     if (out.name.empty())
         out.name = file_name_part(spec.name);
 
@@ -228,12 +219,13 @@ IohFunction ioh_function(const std::string& problem_spec) {
     }
     out.id = base;
     if (!others.empty()) {
-        out.id = base * variant_scale + 1 + static_cast<int>(fnv1a(others) % (variant_scale - 1));
+        out.id = base * variant_scale + 1 + static_cast<int>(stable_hash(others) % (variant_scale - 1));
         // File names stay short: a long list of parameters is cut and keeps its hash.
         constexpr std::size_t longest = 120;
         if (out.name.size() + suffix.size() > longest) {
             char hash[20];
-            std::snprintf(hash, sizeof hash, "_%016llx", static_cast<unsigned long long>(fnv1a(others)));
+            std::snprintf(hash, sizeof hash, "_%016llx",
+                          static_cast<unsigned long long>(stable_hash(others)));
             suffix = suffix.substr(0, longest - std::min(longest, out.name.size() + 17)) + hash;
         }
         out.name += suffix;
@@ -279,13 +271,12 @@ std::string ioh_shortest(double value) {
            digits.substr(static_cast<std::size_t>(integer_digits));
 }
 
-IohExportSummary write_ioh_export(const StudyIndex& index, const fs::path& dir, IohPrecision precision) {
-    IohExportSummary summary;
-    remove_earlier_export(dir);
+namespace {
 
-    // Every problem's function, with ids made distinct across the whole export (so that every
-    // algorithm folder numbers a function alike): a name meeting another on an id takes the next
-    // free one, in (id, name) order.
+// Every problem's function, with ids made distinct across the whole export (so that every
+// algorithm folder numbers a function alike): a name meeting another on an id takes the next free
+// one, in (id, name) order.
+std::map<std::string, IohFunction> distinct_functions(const StudyIndex& index) {
     std::map<std::string, IohFunction> functions; // by problem spec
     std::set<std::pair<int, std::string>> wanted;
     for (const auto& problem : index.problems()) {
@@ -303,103 +294,136 @@ IohExportSummary write_ioh_export(const StudyIndex& index, const fs::path& dir, 
     }
     for (auto& [problem, function] : functions)
         function.id = id_of_name[function.name];
+    return functions;
+}
 
+// Adds the runs of `group`, of a problem that is `function`, to the scenarios of `fx`, by dimension
+// (problems differing in instance or dimension only are one function); a run without a finite
+// value is only counted.
+void add_runs(const RunGroup& group, const IohFunction& function, FunctionExport& fx,
+              IohExportSummary& summary) {
+    for (const RunRecord* r : group.runs) {
+        const double shift = function.minus_f_opt && r->f_opt ? *r->f_opt : 0.0;
+        ExportedRun run = r->improvements ? exact_rows(*r, shift) : grid_rows(*r, shift);
+        if (run.rows.empty()) { // no improvement: every f was +inf
+            ++summary.runs_left_out;
+            continue;
+        }
+        if (!r->improvements)
+            ++fx.approximate_runs;
+        run.instance = function.instance;
+        const std::size_t dimension =
+            !r->best_x.empty() ? r->best_x.size() : static_cast<std::size_t>(function.dimension.value_or(0));
+        auto scenario = std::find_if(fx.scenarios.begin(), fx.scenarios.end(),
+                                     [&](const Scenario& s) { return s.dimension == dimension; });
+        if (scenario == fx.scenarios.end()) {
+            fx.scenarios.push_back({dimension, {}});
+            scenario = fx.scenarios.end() - 1;
+        }
+        scenario->runs.push_back(std::move(run));
+    }
+}
+
+// An algorithm's functions in order of first appearance, each with its scenarios.
+std::vector<FunctionExport> algorithm_exports(const StudyIndex& index, const std::string& algorithm,
+                                              const std::map<std::string, IohFunction>& functions,
+                                              IohExportSummary& summary) {
+    std::vector<FunctionExport> exports;
+    for (const auto& problem : index.problems()) {
+        const RunGroup* group = index.find(problem, algorithm);
+        if (group == nullptr)
+            continue;
+        const IohFunction& function = functions.at(problem);
+        auto fx = std::find_if(exports.begin(), exports.end(),
+                               [&](const FunctionExport& e) { return e.function.id == function.id; });
+        if (fx == exports.end()) {
+            exports.push_back({function, {}, 0});
+            fx = exports.end() - 1;
+        }
+        add_runs(*group, function, *fx, summary);
+    }
+    return exports;
+}
+
+// Writes the .dat of a scenario of function `id` into folder/data_folder and returns the
+// scenario's entry of the JSON.
+std::string write_scenario(const fs::path& folder, const std::string& data_folder, const std::string& id,
+                           const Scenario& scenario, IohPrecision precision, IohExportSummary& summary) {
+    const std::string dat_path =
+        data_folder + "/IOHprofiler_f" + id + "_DIM" + std::to_string(scenario.dimension) + ".dat";
+    std::string dat;
+    std::vector<std::string> runs;
+    for (const ExportedRun& run : scenario.runs) {
+        dat += "evaluations raw_y\n";
+        for (const Row& row : run.rows)
+            dat += std::to_string(row.evaluations) + ' ' + dat_value(row.y, precision, summary.none_values) +
+                   '\n';
+        std::string x;
+        for (std::size_t k = 0; k < run.record->best_x.size(); ++k)
+            x += (k == 0 ? "" : ", ") + json_number(run.record->best_x[k]);
+        runs.push_back("\"instance\": " + std::to_string(run.instance) +
+                       ", \"evals\": " + std::to_string(run.record->evaluations) +
+                       ", \"best\": {\"evals\": " + std::to_string(run.best_evaluations) +
+                       ", \"y\": " + json_number(run.best_y) + ", \"x\": [" + x + "]}");
+    }
+    fs::create_directories(folder / data_folder);
+    write_file_atomically(folder / dat_path, dat);
+    ++summary.files;
+    std::string joined;
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        joined += (i == 0 ? "" : "},\n\t\t\t{") + runs[i];
+    return "\"dimension\": " + std::to_string(scenario.dimension) +
+           ",\n\t\t\"path\": " + json_string(dat_path) + ",\n\t\t\"runs\": [\n\t\t\t{" + joined + "}\n\t\t]";
+}
+
+// The JSON of one function of an algorithm, in IOH's layout (to the spaces before its line breaks).
+std::string function_json(const StudyIndex& index, const std::string& algorithm, const FunctionExport& fx,
+                          const std::vector<std::string>& scenarios) {
+    std::string info = "mhbench " + index.full_spec(algorithm);
+    if (!index.budget().empty())
+        info += ", budget " + index.budget();
+    if (fx.approximate_runs > 0)
+        info += "; " + std::to_string(fx.approximate_runs) + (fx.approximate_runs == 1 ? " run" : " runs") +
+                " stored before mhbench recorded improvements: rows where its trace recorded them "
+                "(iteration ends, log grid), not at each improvement";
+    std::string joined;
+    for (std::size_t i = 0; i < scenarios.size(); ++i)
+        joined += (i == 0 ? "" : "},\n\t\t{") + scenarios[i];
+    return std::string("{\n\t\"version\": \"") + ioh_format_version +
+           "\", \n\t\"suite\": " + json_string(fx.function.suite) +
+           ", \n\t\"function_id\": " + std::to_string(fx.function.id) +
+           ", \n\t\"function_name\": " + json_string(fx.function.name) +
+           ", \n\t\"maximization\": false, \n\t\"algorithm\": {\"name\": " +
+           json_string(index.label(algorithm)) + ", \"info\": " + json_string(info) +
+           "},\n\t\"attributes\": [\"evaluations\", \"raw_y\"],\n\t\"scenarios\": [\n\t\t{" + joined +
+           "}\n\t]\n}\n";
+}
+
+// The files of one function of an algorithm in `folder`: a .dat per scenario and the JSON.
+void write_function(const StudyIndex& index, const std::string& algorithm, const fs::path& folder,
+                    const FunctionExport& fx, IohPrecision precision, IohExportSummary& summary) {
+    summary.approximate_runs += fx.approximate_runs;
+    const std::string id = std::to_string(fx.function.id);
+    const std::string data_folder = "data_f" + id + "_" + fx.function.name;
+    std::vector<std::string> scenarios;
+    for (const Scenario& scenario : fx.scenarios)
+        scenarios.push_back(write_scenario(folder, data_folder, id, scenario, precision, summary));
+    write_file_atomically(folder / ("IOHprofiler_f" + id + "_" + fx.function.name + ".json"),
+                          function_json(index, algorithm, fx, scenarios));
+    ++summary.files;
+}
+
+} // namespace
+
+IohExportSummary write_ioh_export(const StudyIndex& index, const fs::path& dir, IohPrecision precision) {
+    IohExportSummary summary;
+    remove_earlier_export(dir);
+    const std::map<std::string, IohFunction> functions = distinct_functions(index);
     for (const auto& algorithm : index.algorithms()) {
-        // The algorithm's functions in order of first appearance, each with its scenarios.
-        std::vector<FunctionExport> exports;
-        for (const auto& problem : index.problems()) {
-            const RunGroup* group = index.find(problem, algorithm);
-            if (group == nullptr)
-                continue;
-            const IohFunction& function = functions[problem];
-            auto fx = std::find_if(exports.begin(), exports.end(),
-                                   [&](const FunctionExport& e) { return e.function.id == function.id; });
-            if (fx == exports.end()) {
-                exports.push_back({function, {}, 0});
-                fx = exports.end() - 1;
-            }
-            for (const RunRecord* r : group->runs) {
-                const double shift = function.minus_f_opt && r->f_opt ? *r->f_opt : 0.0;
-                ExportedRun run = r->improvements ? exact_rows(*r, shift) : grid_rows(*r, shift);
-                if (run.rows.empty()) { // no improvement: every f was +inf
-                    ++summary.runs_left_out;
-                    continue;
-                }
-                if (!r->improvements)
-                    ++fx->approximate_runs;
-                run.instance = function.instance;
-                const std::size_t dimension = !r->best_x.empty()
-                                                  ? r->best_x.size()
-                                                  : static_cast<std::size_t>(function.dimension.value_or(0));
-                auto scenario = std::find_if(fx->scenarios.begin(), fx->scenarios.end(),
-                                             [&](const Scenario& s) { return s.dimension == dimension; });
-                if (scenario == fx->scenarios.end()) {
-                    fx->scenarios.push_back({dimension, {}});
-                    scenario = fx->scenarios.end() - 1;
-                }
-                scenario->runs.push_back(std::move(run));
-            }
-        }
-
         const fs::path folder = dir / file_name_part(algorithm);
-        for (const FunctionExport& fx : exports) {
-            if (fx.scenarios.empty())
-                continue;
-            summary.approximate_runs += fx.approximate_runs;
-            const std::string id = std::to_string(fx.function.id);
-            const std::string data_folder = "data_f" + id + "_" + fx.function.name;
-            std::vector<std::string> scenarios;
-            for (const Scenario& scenario : fx.scenarios) {
-                const std::string dat_path = data_folder + "/IOHprofiler_f" + id + "_DIM" +
-                                             std::to_string(scenario.dimension) + ".dat";
-                std::string dat;
-                std::vector<std::string> runs;
-                for (const ExportedRun& run : scenario.runs) {
-                    dat += "evaluations raw_y\n";
-                    for (const Row& row : run.rows)
-                        dat += std::to_string(row.evaluations) + ' ' +
-                               dat_value(row.y, precision, summary.none_values) + '\n';
-                    std::string x;
-                    for (std::size_t k = 0; k < run.record->best_x.size(); ++k)
-                        x += (k == 0 ? "" : ", ") + json_number(run.record->best_x[k]);
-                    runs.push_back("\"instance\": " + std::to_string(run.instance) +
-                                   ", \"evals\": " + std::to_string(run.record->evaluations) +
-                                   ", \"best\": {\"evals\": " + std::to_string(run.best_evaluations) +
-                                   ", \"y\": " + json_number(run.best_y) + ", \"x\": [" + x + "]}");
-                }
-                fs::create_directories(folder / data_folder);
-                write_file_atomically(folder / dat_path, dat);
-                ++summary.files;
-                std::string joined;
-                for (std::size_t i = 0; i < runs.size(); ++i)
-                    joined += (i == 0 ? "" : "},\n\t\t\t{") + runs[i];
-                scenarios.push_back("\"dimension\": " + std::to_string(scenario.dimension) +
-                                    ",\n\t\t\"path\": " + json_string(dat_path) +
-                                    ",\n\t\t\"runs\": [\n\t\t\t{" + joined + "}\n\t\t]");
-            }
-            std::string info = "mhbench " + index.full_spec(algorithm);
-            if (!index.budget().empty())
-                info += ", budget " + index.budget();
-            if (fx.approximate_runs > 0)
-                info += "; " + std::to_string(fx.approximate_runs) +
-                        (fx.approximate_runs == 1 ? " run" : " runs") +
-                        " stored before mhbench recorded improvements: rows where its trace recorded them "
-                        "(iteration ends, log grid), not at each improvement";
-            std::string joined;
-            for (std::size_t i = 0; i < scenarios.size(); ++i)
-                joined += (i == 0 ? "" : "},\n\t\t{") + scenarios[i];
-            // IOH's layout, to the spaces before its line breaks.
-            const std::string json =
-                std::string("{\n\t\"version\": \"") + ioh_format_version +
-                "\", \n\t\"suite\": " + json_string(fx.function.suite) + ", \n\t\"function_id\": " + id +
-                ", \n\t\"function_name\": " + json_string(fx.function.name) +
-                ", \n\t\"maximization\": false, \n\t\"algorithm\": {\"name\": " +
-                json_string(index.label(algorithm)) + ", \"info\": " + json_string(info) +
-                "},\n\t\"attributes\": [\"evaluations\", \"raw_y\"],\n\t\"scenarios\": [\n\t\t{" + joined +
-                "}\n\t]\n}\n";
-            write_file_atomically(folder / ("IOHprofiler_f" + id + "_" + fx.function.name + ".json"), json);
-            ++summary.files;
-        }
+        for (const FunctionExport& fx : algorithm_exports(index, algorithm, functions, summary))
+            if (!fx.scenarios.empty())
+                write_function(index, algorithm, folder, fx, precision, summary);
     }
     return summary;
 }

@@ -157,6 +157,95 @@ bool handle_stop_signal(int signal, struct sigaction& previous) {
     report_failure(report_fd);
 }
 
+// SIGINT and SIGTERM passed on to the child while it runs (on_stop_while_child_runs). They stay
+// blocked in this thread from before the handlers are installed until the child's pid is known, so
+// that the handler never runs without a child to pass the stop to here, and the child never runs
+// it at all.
+class StopForwarding {
+public:
+    StopForwarding() {
+        sigset_t stops;
+        sigemptyset(&stops);
+        sigaddset(&stops, SIGINT);
+        sigaddset(&stops, SIGTERM);
+        ::pthread_sigmask(SIG_BLOCK, &stops, &previous_mask_);
+        stops_received.store(0);
+        running_child.store(-1);
+        handles_int_ = handle_stop_signal(SIGINT, previous_int_);
+        handles_term_ = handle_stop_signal(SIGTERM, previous_term_);
+    }
+    StopForwarding(const StopForwarding&) = delete;
+    StopForwarding& operator=(const StopForwarding&) = delete;
+
+    // The thread's signal mask from before, which the child gets too.
+    [[nodiscard]] const sigset_t& previous_mask() const { return previous_mask_; }
+
+    // From now on a stop goes to `pid`.
+    void child_started(pid_t pid) {
+        running_child.store(pid);
+        ::pthread_sigmask(SIG_SETMASK, &previous_mask_, nullptr);
+        if (stops_received.load() > 0) // a stop that another thread handled before the pid was known
+            ::kill(pid, SIGTERM);
+    }
+
+    // No child to pass a stop to any more; the handlers and the mask as they were.
+    void restore() {
+        running_child.store(-1);
+        if (handles_int_)
+            ::sigaction(SIGINT, &previous_int_, nullptr);
+        if (handles_term_)
+            ::sigaction(SIGTERM, &previous_term_, nullptr);
+        ::pthread_sigmask(SIG_SETMASK, &previous_mask_, nullptr);
+    }
+
+private:
+    sigset_t previous_mask_{};
+    struct sigaction previous_int_ {};
+    struct sigaction previous_term_ {};
+    bool handles_int_ = false;
+    bool handles_term_ = false;
+};
+
+// execv's argument vector: pointers into `text` (the program, then its arguments), then null.
+std::vector<char*> exec_arguments(std::vector<std::string>& text) {
+    std::vector<char*> argv;
+    for (auto& a : text)
+        argv.push_back(a.data());
+    argv.push_back(nullptr);
+    return argv;
+}
+
+// Where the child's stdout or stderr goes: a memory file to read back, or /dev/null.
+int child_output(bool capture_output, const char* name) {
+    return capture_output ? ::memfd_create(name, MFD_CLOEXEC) : ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+}
+
+// How a started child ended: the errno of an exec that failed, which it reported, or its wait status.
+struct ChildEnd {
+    bool exec_failed = false;
+    int exec_error = 0;
+    int status = 0;
+    int wait_error = 0; // waitpid's errno when it failed
+};
+
+// Reads the child's report of an exec failure (the pipe closes without one when exec succeeds),
+// then waits for it to end.
+ChildEnd wait_for_child(pid_t pid, int report_read) {
+    ChildEnd end;
+    ssize_t got = 0;
+    do
+        got = ::read(report_read, &end.exec_error, sizeof end.exec_error);
+    while (got < 0 && errno == EINTR);
+    end.exec_failed = got == static_cast<ssize_t>(sizeof end.exec_error);
+    while (::waitpid(pid, &end.status, 0) < 0) {
+        if (errno != EINTR) {
+            end.wait_error = errno;
+            break;
+        }
+    }
+    return end;
+}
+
 } // namespace
 
 ChildOutcome run_child_process(const std::string& program, const std::vector<std::string>& arguments,
@@ -171,17 +260,11 @@ ChildOutcome run_child_process(const std::string& program, const std::vector<std
     }
     std::vector<std::string> argv_text = {program};
     argv_text.insert(argv_text.end(), arguments.begin(), arguments.end());
-    std::vector<char*> argv;
-    for (auto& a : argv_text)
-        argv.push_back(a.data());
-    argv.push_back(nullptr);
+    const std::vector<char*> argv = exec_arguments(argv_text);
 
-    const auto output = [capture_output](const char* name) {
-        return capture_output ? ::memfd_create(name, MFD_CLOEXEC) : ::open("/dev/null", O_WRONLY | O_CLOEXEC);
-    };
     const Descriptor in(above_standard(::open("/dev/null", O_RDONLY | O_CLOEXEC)));
-    const Descriptor out(above_standard(output("mhbench-child-stdout")));
-    const Descriptor err(above_standard(output("mhbench-child-stderr")));
+    const Descriptor out(above_standard(child_output(capture_output, "mhbench-child-stdout")));
+    const Descriptor err(above_standard(child_output(capture_output, "mhbench-child-stderr")));
     if (in.get() < 0 || out.get() < 0 || err.get() < 0) {
         outcome.error = os_reason("cannot open its output files", errno);
         return outcome;
@@ -194,71 +277,32 @@ ChildOutcome run_child_process(const std::string& program, const std::vector<std
     const Descriptor report_read(above_standard(pipe_ends[0]));
     Descriptor report_write(above_standard(pipe_ends[1]));
 
-    // SIGINT and SIGTERM stay blocked in this thread from before the handlers are installed until
-    // the child's pid is known, so that the handler never runs without a child to pass the stop to
-    // here, and the child never runs it at all.
-    sigset_t stops;
-    sigemptyset(&stops);
-    sigaddset(&stops, SIGINT);
-    sigaddset(&stops, SIGTERM);
-    sigset_t previous_mask;
-    ::pthread_sigmask(SIG_BLOCK, &stops, &previous_mask);
-    stops_received.store(0);
-    running_child.store(-1);
-    struct sigaction previous_int {};
-    struct sigaction previous_term {};
-    const bool handles_int = handle_stop_signal(SIGINT, previous_int);
-    const bool handles_term = handle_stop_signal(SIGTERM, previous_term);
-    const auto restore_signals = [&] {
-        if (handles_int)
-            ::sigaction(SIGINT, &previous_int, nullptr);
-        if (handles_term)
-            ::sigaction(SIGTERM, &previous_term, nullptr);
-        ::pthread_sigmask(SIG_SETMASK, &previous_mask, nullptr);
-    };
-
+    StopForwarding stops;
     const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
     if (pid == 0)
         exec_child(path->c_str(), argv.data(), parent, in.get(), out.get(), err.get(), report_write.get(),
-                   previous_mask);
+                   stops.previous_mask());
     if (pid < 0) {
         outcome.error = os_reason("cannot start a process", errno);
-        restore_signals();
+        stops.restore();
         return outcome;
     }
-    running_child.store(pid);
-    ::pthread_sigmask(SIG_SETMASK, &previous_mask, nullptr);
-    if (stops_received.load() > 0) // a stop that another thread handled before the pid was known
-        ::kill(pid, SIGTERM);
-
+    stops.child_started(pid);
     report_write.reset();
-    int exec_error = 0;
-    ssize_t got = 0;
-    do
-        got = ::read(report_read.get(), &exec_error, sizeof exec_error);
-    while (got < 0 && errno == EINTR);
-    int status = 0;
-    int wait_error = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
-        if (errno != EINTR) {
-            wait_error = errno;
-            break;
-        }
-    }
-    running_child.store(-1);
-    restore_signals();
+    const ChildEnd end = wait_for_child(pid, report_read.get());
+    stops.restore();
     outcome.stop_requested = stops_received.load() > 0;
-    if (got == static_cast<ssize_t>(sizeof exec_error)) {
-        outcome.error = os_reason(*path + " cannot be run", exec_error);
+    if (end.exec_failed) {
+        outcome.error = os_reason(*path + " cannot be run", end.exec_error);
         return outcome;
     }
-    if (wait_error != 0) {
-        outcome.error = os_reason("cannot wait for " + *path, wait_error);
+    if (end.wait_error != 0) {
+        outcome.error = os_reason("cannot wait for " + *path, end.wait_error);
         return outcome;
     }
     outcome.started = true;
-    outcome.status = status;
+    outcome.status = end.status;
     if (capture_output) {
         outcome.out = read_all(out.get());
         outcome.err = read_all(err.get());

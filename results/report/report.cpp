@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <optional>
 #include <stdexcept>
-#include <sys/wait.h>
 
 #include "results/analysis/cec_protocol.hpp"
 #include "results/analysis/critical_difference.hpp"
@@ -14,7 +13,7 @@
 #include "results/html/html_report.hpp"
 #include "results/latex/latex_document.hpp"
 #include "results/latex/latex_table.hpp"
-#include "results/report/child_process.hpp"
+#include "results/report/report_figures.hpp"
 #include "results/report/report_readme.hpp"
 #include "results/store/csv.hpp"
 #include "results/store/study_index.hpp"
@@ -55,115 +54,6 @@ void check_options(const ReportOptions& options) {
     if (options.errors == nullptr)
         throw std::logic_error("ReportOptions::errors is null");
 }
-
-std::vector<std::string> non_empty_lines(const std::string& text) {
-    std::vector<std::string> lines;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        const std::size_t end = std::min(text.find('\n', start), text.size());
-        std::string line = text.substr(start, end - start);
-        if (line.find_first_not_of(" \t\r") != std::string::npos)
-            lines.push_back(std::move(line));
-        start = end + 1;
-    }
-    return lines;
-}
-
-// The first candidate that can import matplotlib; `interrupted` when a stop came meanwhile.
-std::optional<std::string> find_python(const std::vector<std::string>& candidates, bool& interrupted) {
-    interrupted = false;
-    for (const auto& python : candidates) {
-        const ChildOutcome probe = run_child_process(python, {"-c", "import matplotlib"}, false);
-        if (probe.stop_requested) {
-            interrupted = true;
-            return std::nullopt;
-        }
-        if (probe.exited_with(0))
-            return python;
-    }
-    return std::nullopt;
-}
-
-// The exit status plot_study.py gives when SIGINT or SIGTERM stopped it (as a shell reports Ctrl-C).
-constexpr int plot_exit_interrupted = 130;
-
-enum class Figures { drawn_or_skipped, interrupted };
-
-// `note` gets what the HTML page must say about the figures (skipped, failed), empty when all went well.
-Figures draw_figures(const ReportOptions& options, const fs::path& out_dir, std::ostream& console,
-                     std::string& note) {
-    note.clear();
-    if (options.stop != nullptr && options.stop->load())
-        return Figures::interrupted;
-    const std::string how =
-        "install matplotlib (apt install python3-matplotlib) and run mhbench report again, or "
-        "run scripts/plot_study.py " +
-        out_dir.string();
-    if (options.plot_script.empty() || !fs::exists(options.plot_script)) {
-        console << "figures skipped: the plotting script " << options.plot_script.string()
-                << " was not found; the tables and curve data are written\n";
-        note = "figures skipped: the plotting script " + options.plot_script.string() + " was not found";
-        return Figures::drawn_or_skipped;
-    }
-    bool interrupted = false;
-    const auto python = find_python(options.python_candidates, interrupted);
-    if (interrupted)
-        return Figures::interrupted;
-    if (!python) {
-        console << "figures skipped: no Python with matplotlib found; " << how << '\n';
-        note = "figures skipped: no Python with matplotlib found; " + how;
-        return Figures::drawn_or_skipped;
-    }
-    // The script's output is collected, not passed through: its notes (what a figure left out) go to
-    // the console, a figure that failed is one line on `errors`, and a traceback stays in a log.
-    const fs::path figures = out_dir / "figures";
-    std::error_code ec;
-    fs::create_directories(figures, ec);
-    const fs::path log_file = figures / "plot_study.log";
-    const ChildOutcome run =
-        run_child_process(*python, {options.plot_script.string(), out_dir.string()}, true);
-    fs::remove(log_file, ec); // a stale log from an earlier report would mislead
-    if (run.stop_requested || run.exited_with(plot_exit_interrupted))
-        return Figures::interrupted; // the figures drawn so far are whole; the next report redraws all
-    const bool succeeded = run.exited_with(0);
-    for (const auto& line : non_empty_lines(run.out))
-        console << line << '\n';
-    if (!succeeded || !run.err.empty()) // keep everything the script said, traceback included
-        write_file_atomically(log_file, run.started ? run.out + run.err : run.error + '\n');
-    std::ostream& errors = *options.errors;
-    if (!succeeded) {
-        const auto lines = non_empty_lines(run.err.empty() ? run.out : run.err);
-        std::string reason = lines.empty() ? std::string("no output") : lines.back();
-        if (!run.started)
-            reason = "the plotting script did not finish (could not start: " + run.error + ")";
-        else if (!WIFEXITED(run.status))
-            reason = "the plotting script did not finish (" +
-                     (WIFSIGNALED(run.status) ? "signal " + std::to_string(WTERMSIG(run.status))
-                                              : std::string("status ") + std::to_string(run.status)) +
-                     ")";
-        errors << "figures failed: " << reason << " (full output: " << log_file.string()
-               << "); the tables and curve data are written\n";
-        note = "figures failed: " + reason + " (full output: figures/plot_study.log)";
-        return Figures::drawn_or_skipped;
-    }
-    const auto failures = non_empty_lines(run.err);
-    for (const auto& line : failures) // the script's one line per figure that failed
-        errors << "figures: " << line << '\n';
-    if (!failures.empty())
-        note = "some figures could not be drawn (" + failures.front() + (failures.size() > 1 ? ", ..." : "") +
-               ")";
-    console << "figures: " << figures.string() << '\n';
-    return Figures::drawn_or_skipped;
-}
-
-} // namespace
-
-std::optional<std::string> find_matplotlib_python(const std::vector<std::string>& candidates) {
-    bool interrupted = false;
-    return find_python(candidates, interrupted);
-}
-
-namespace {
 
 // The tables of one budget, titled and captioned with it when it is known.
 std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOptions& comparison,
@@ -237,6 +127,155 @@ void make_report_directory(const fs::path& dir) {
         throw std::runtime_error(dir.string() + ": cannot create the report directory");
 }
 
+std::string count_of(std::size_t n, const char* noun) {
+    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
+// The 2^k on/off designs among the budget's variants, with their effects, and the candidates that
+// are not one (with why not).
+struct FactorialFindings {
+    std::vector<DesignEffects> designs;
+    std::vector<DesignCandidate> rejected;
+};
+
+FactorialFindings factorial_findings(const StudyIndex& index, double alpha) {
+    FactorialFindings found;
+    for (auto& candidate : find_factorial_designs(index)) {
+        if (!candidate.design) {
+            found.rejected.push_back(std::move(candidate));
+            continue;
+        }
+        DesignEffects effects{*candidate.design, factorial_effects(index, *candidate.design, alpha)};
+        if (!effects.analyses.empty())
+            found.designs.push_back(std::move(effects));
+    }
+    return found;
+}
+
+// The console's summary of a budget: its runs, what was left out, and its factorial designs.
+void say_budget_summary(const StudyData& study, const std::string& budget, const StudyIndex& index,
+                        const std::string& heading, const std::string& reference,
+                        const FactorialFindings& factorial, std::ostream& console) {
+    std::size_t runs = 0;
+    for (const auto& r : study.runs)
+        runs += r.budget == budget ? 1U : 0U;
+    console << heading << count_of(runs, "run") << " (" << index.failed_runs() << " failed), "
+            << count_of(index.problems().size(), "problem") << ", "
+            << count_of(index.algorithms().size(), "algorithm") << "; reference " << index.label(reference)
+            << '\n';
+    if (!index.failed().empty()) {
+        const RunRecord& first = *index.failed().front();
+        console << count_of(index.failed().size(), "failed run")
+                << " left out (first: " << run_name(index, first) << ": "
+                << (first.message.empty() ? std::string("no message") : first.message) << ")\n";
+    }
+    if (index.infinite_runs() > 0)
+        console << count_of(index.infinite_runs(), "run") << " ended at "
+                << (index.negative_infinite_runs() == 0 ? "+inf" : "+inf or -inf")
+                << ": the worst value in medians and rank tests, inf in means\n";
+    for (const auto& d : factorial.designs)
+        console << "factorial design " << d.design.description() << ": effects in effects.csv\n";
+    for (const auto& r : factorial.rejected)
+        console << "no factorial analysis of " << r.name << ": " << r.why_not << '\n';
+}
+
+// The CEC protocol the study follows (`protocol = cec2017` in study.ini), if it names one this
+// mhbench knows: such a study gets its tables and the organisers' result files.
+const CecProtocol* study_cec_protocol(const StudyData& study, std::ostream& console) {
+    const std::optional<std::string> protocol_name = study_protocol(study.study_text);
+    const CecProtocol* protocol = protocol_name ? find_cec_protocol(*protocol_name) : nullptr;
+    if (protocol_name && protocol == nullptr)
+        console << "protocol '" << *protocol_name << "' is not one this mhbench knows ("
+                << cec_protocol_names() << "): its tables and result files are not written\n";
+    return protocol;
+}
+
+// Writes `content` to `path`, or removes `path` when there is none: a stale file from an earlier
+// report would mislead.
+void write_or_remove(const fs::path& path, const std::optional<std::string>& content) {
+    std::error_code ec;
+    if (content)
+        write_file_atomically(path, *content);
+    else
+        fs::remove(path, ec);
+}
+
+// The budget's curve data and statistics for the figures, and budget.txt; says which of the
+// optional files were written.
+void write_curve_data(const StudyIndex& index, const std::string& budget, const fs::path& dir,
+                      const std::vector<DesignEffects>& designs, double alpha, ReportFiles& files) {
+    write_or_remove(dir / "budget.txt",
+                    budget.empty() ? std::nullopt : std::optional<std::string>(budget + "\n"));
+    write_file_atomically(dir / "curves_iteration.csv", fitness_curves_by_iteration(index));
+    write_file_atomically(dir / "curves_evaluations.csv", fitness_curves_by_evaluations(index));
+    write_file_atomically(dir / "parameters_iteration.csv", parameter_curves_by_iteration(index));
+    write_file_atomically(dir / "final_values.csv", final_values(index));
+    write_file_atomically(dir / "target_hits.csv", target_hits(index));
+    const std::optional<std::string> critical_difference = critical_difference_data(index, alpha);
+    write_or_remove(dir / "critical_difference.csv", critical_difference);
+    write_or_remove(dir / "effect_means.csv",
+                    designs.empty() ? std::nullopt : std::optional<std::string>(effect_means_csv(designs)));
+    std::error_code ec;
+    if (designs.empty()) // no effects table: stale copies from an earlier report would mislead
+        for (const char* ext : {".md", ".tex", ".csv"})
+            fs::remove(dir / (std::string("effects") + ext), ec);
+    files.critical_difference = critical_difference.has_value();
+    files.effect_means = !designs.empty();
+    files.budget_txt = !budget.empty();
+}
+
+// The organisers' result files in dir/cec when the study follows a CEC protocol; otherwise those of
+// an earlier report of the study, when it followed one, are removed.
+void write_cec_files(const StudyIndex& index, const CecProtocol* protocol, const fs::path& dir,
+                     std::ostream& console) {
+    if (protocol != nullptr) {
+        const CecFilesSummary cec = write_cec_result_files(index, *protocol, dir / "cec");
+        console << protocol->title << " result files (" << cec.files
+                << ", the organisers' layout; see README there): " << (dir / "cec").string() << '\n';
+        if (cec.failed_runs > 0)
+            console << protocol->title << " result files: " << count_of(cec.failed_runs, "failed run")
+                    << " left out\n";
+    } else if (fs::exists(dir / "cec" / "README")) {
+        std::error_code ec;
+        fs::remove_all(dir / "cec", ec);
+    }
+}
+
+// Says on the console what the IOHprofiler export in `ioh` holds and left out.
+void say_ioh_export(const IohExportSummary& ioh, const fs::path& ioh_dir, std::ostream& console) {
+    if (ioh.files > 0)
+        console << "IOHprofiler export (" << ioh.files
+                << " files, load the folder in IOHanalyzer): " << ioh_dir.string() << '\n';
+    else
+        console << "IOHprofiler export: no run has a finite value to export\n";
+    if (ioh.runs_left_out > 0)
+        console << "IOHprofiler export: left out " << count_of(ioh.runs_left_out, "run")
+                << " that ended at +inf (no improvement to log, as IOHexperimenter would log none)\n";
+    if (ioh.none_values > 0)
+        console << "IOHprofiler export: " << count_of(ioh.none_values, "infinite value")
+                << " written None, as IOHexperimenter writes them\n";
+    if (ioh.approximate_runs > 0)
+        console << "IOHprofiler export: " << count_of(ioh.approximate_runs, "run")
+                << " stored before mhbench recorded improvements: rows where the trace recorded them, not at "
+                   "each improvement (approximate; run the study again with --overwrite for exact rows)\n";
+}
+
+// The figures of the budget unless `figures` is false (set to false when they are interrupted),
+// and what the budget's section of index.html says about them.
+void draw_budget_figures(const ReportOptions& options, const fs::path& dir, std::ostream& console,
+                         bool& figures, HtmlBudgetSection& html) {
+    html.figures_current = figures;
+    if (figures && draw_figures(options, dir, console, html.figures_note) == Figures::interrupted)
+        figures = false;
+    if (!figures) {
+        html.figures_current = false;
+        html.figures_note = options.figures
+                                ? "the figures were interrupted; run mhbench report on the study to "
+                                  "draw them"
+                                : "the figures were not drawn (--no-figures)";
+    }
+}
+
 // Everything of one budget in `dir`: tables, curve data, effects, IOH export, and the figures
 // unless `figures` is false. Returns the tables (for the combined report.md and report.tex); sets
 // `figures` to false when they were interrupted. `html` gets the budget's section of index.html.
@@ -249,125 +288,28 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
     ComparisonOptions comparison;
     comparison.reference = budget_reference(index, options, console);
     comparison.alpha = options.alpha;
-
-    std::vector<DesignEffects> designs;
-    std::vector<DesignCandidate> rejected;
-    for (auto& candidate : find_factorial_designs(index)) {
-        if (!candidate.design) {
-            rejected.push_back(std::move(candidate));
-            continue;
-        }
-        DesignEffects effects{*candidate.design, factorial_effects(index, *candidate.design, options.alpha)};
-        if (!effects.analyses.empty())
-            designs.push_back(std::move(effects));
-    }
-
-    const auto count = [](std::size_t n, const char* noun) {
-        return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
-    };
-    std::size_t runs = 0;
-    for (const auto& r : study.runs)
-        runs += r.budget == budget ? 1U : 0U;
-    console << heading << count(runs, "run") << " (" << index.failed_runs() << " failed), "
-            << count(index.problems().size(), "problem") << ", "
-            << count(index.algorithms().size(), "algorithm") << "; reference "
-            << index.label(comparison.reference) << '\n';
-    if (!index.failed().empty()) {
-        const RunRecord& first = *index.failed().front();
-        console << count(index.failed().size(), "failed run")
-                << " left out (first: " << run_name(index, first) << ": "
-                << (first.message.empty() ? std::string("no message") : first.message) << ")\n";
-    }
-    if (index.infinite_runs() > 0)
-        console << count(index.infinite_runs(), "run") << " ended at "
-                << (index.negative_infinite_runs() == 0 ? "+inf" : "+inf or -inf")
-                << ": the worst value in medians and rank tests, inf in means\n";
-    for (const auto& d : designs)
-        console << "factorial design " << d.design.description() << ": effects in effects.csv\n";
-    for (const auto& r : rejected)
-        console << "no factorial analysis of " << r.name << ": " << r.why_not << '\n';
-    // A study that follows a CEC protocol (`protocol = cec2017` in study.ini) gets its tables and the
-    // organisers' result files.
-    const std::optional<std::string> protocol_name = study_protocol(study.study_text);
-    const CecProtocol* protocol = protocol_name ? find_cec_protocol(*protocol_name) : nullptr;
-    if (protocol_name && protocol == nullptr)
-        console << "protocol '" << *protocol_name << "' is not one this mhbench knows ("
-                << cec_protocol_names() << "): its tables and result files are not written\n";
+    const FactorialFindings factorial = factorial_findings(index, options.alpha);
+    say_budget_summary(study, budget, index, heading, comparison.reference, factorial, console);
+    const CecProtocol* protocol = study_cec_protocol(study, console);
     console << '\n';
 
-    const std::vector<Table> tables =
-        budget_tables(index, comparison, designs, rejected, !study.algorithms.empty(), protocol);
+    const std::vector<Table> tables = budget_tables(index, comparison, factorial.designs, factorial.rejected,
+                                                    !study.algorithms.empty(), protocol);
     write_tables(tables, dir, options, console, all_markdown);
-
-    std::error_code ec;
-    const auto write_or_remove = [&](const fs::path& path, const std::optional<std::string>& content) {
-        if (content)
-            write_file_atomically(path, *content);
-        else
-            fs::remove(path, ec); // a stale one from an earlier report would mislead
-    };
-    write_or_remove(dir / "budget.txt",
-                    budget.empty() ? std::nullopt : std::optional<std::string>(budget + "\n"));
-    write_file_atomically(dir / "curves_iteration.csv", fitness_curves_by_iteration(index));
-    write_file_atomically(dir / "curves_evaluations.csv", fitness_curves_by_evaluations(index));
-    write_file_atomically(dir / "parameters_iteration.csv", parameter_curves_by_iteration(index));
-    write_file_atomically(dir / "final_values.csv", final_values(index));
-    write_file_atomically(dir / "target_hits.csv", target_hits(index));
-    const std::optional<std::string> critical_difference = critical_difference_data(index, options.alpha);
-    write_or_remove(dir / "critical_difference.csv", critical_difference);
-    write_or_remove(dir / "effect_means.csv",
-                    designs.empty() ? std::nullopt : std::optional<std::string>(effect_means_csv(designs)));
-    if (designs.empty()) // no effects table: stale copies from an earlier report would mislead
-        for (const char* ext : {".md", ".tex", ".csv"})
-            fs::remove(dir / (std::string("effects") + ext), ec);
-    if (protocol != nullptr) {
-        const CecFilesSummary cec = write_cec_result_files(index, *protocol, dir / "cec");
-        console << protocol->title << " result files (" << cec.files
-                << ", the organisers' layout; see README there): " << (dir / "cec").string() << '\n';
-        if (cec.failed_runs > 0)
-            console << protocol->title << " result files: " << count(cec.failed_runs, "failed run")
-                    << " left out\n";
-    } else if (fs::exists(dir / "cec" / "README")) {
-        fs::remove_all(dir / "cec", ec); // from a report of the study when it followed a protocol
-    }
-    const IohExportSummary ioh = write_ioh_export(index, dir / "ioh", options.ioh_precision);
-    console << "tables and curve data: " << dir.string() << '\n';
-    if (ioh.files > 0)
-        console << "IOHprofiler export (" << ioh.files
-                << " files, load the folder in IOHanalyzer): " << (dir / "ioh").string() << '\n';
-    else
-        console << "IOHprofiler export: no run has a finite value to export\n";
-    if (ioh.runs_left_out > 0)
-        console << "IOHprofiler export: left out " << count(ioh.runs_left_out, "run")
-                << " that ended at +inf (no improvement to log, as IOHexperimenter would log none)\n";
-    if (ioh.none_values > 0)
-        console << "IOHprofiler export: " << count(ioh.none_values, "infinite value")
-                << " written None, as IOHexperimenter writes them\n";
-    if (ioh.approximate_runs > 0)
-        console << "IOHprofiler export: " << count(ioh.approximate_runs, "run")
-                << " stored before mhbench recorded improvements: rows where the trace recorded them, not at "
-                   "each improvement (approximate; run the study again with --overwrite for exact rows)\n";
     ReportFiles files;
     files.formats.assign(options.formats.begin(), options.formats.end());
-    files.critical_difference = critical_difference.has_value();
-    files.effect_means = !designs.empty();
+    write_curve_data(index, budget, dir, factorial.designs, options.alpha, files);
+    write_cec_files(index, protocol, dir, console);
+    const IohExportSummary ioh = write_ioh_export(index, dir / "ioh", options.ioh_precision);
+    console << "tables and curve data: " << dir.string() << '\n';
+    say_ioh_export(ioh, dir / "ioh", console);
     files.cec = protocol != nullptr;
     files.ioh = ioh.files > 0;
-    files.budget_txt = !budget.empty();
     files.combined = html.folder.empty(); // no folder of its own: this budget is the whole report
     html.budget = budget;
     html.directory = dir;
     html.tables = tables;
-    html.figures_current = figures;
-    if (figures && draw_figures(options, dir, console, html.figures_note) == Figures::interrupted)
-        figures = false;
-    if (!figures) {
-        html.figures_current = false;
-        html.figures_note = options.figures
-                                ? "the figures were interrupted; run mhbench report on the study to "
-                                  "draw them"
-                                : "the figures were not drawn (--no-figures)";
-    }
+    draw_budget_figures(options, dir, console, figures, html);
     files.figures = fs::exists(dir / "figures");
     write_file_atomically(dir / "README.md", report_readme(tables, files));
     return tables;

@@ -35,6 +35,7 @@
 #include <mutex>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -43,6 +44,9 @@
 #include "results/store/run_record.hpp"
 
 namespace mhb {
+
+struct DecodedRecord;
+class StoreReader; // internal to the study writer (study_writer_internal.hpp)
 
 struct StudyFiles {
     static constexpr const char* study = "study.ini";
@@ -201,6 +205,10 @@ private:
     [[nodiscard]] std::vector<std::int64_t> runs_to_render() const;
     void sync_if_due();
     void sync_store();
+    // Rendering the result files (study_rendering.cpp).
+    struct RenderedChunk; // the lines and summary of a chunk of runs
+    [[nodiscard]] DecodedRecord stored_record(std::int64_t run_id, std::string_view payload) const;
+    [[nodiscard]] RenderedChunk render_chunk(const StoreReader& in, std::span<const std::int64_t> ids) const;
     void render_files(const std::vector<std::int64_t>& ids);
 
     std::filesystem::path dir_;

@@ -1,0 +1,226 @@
+// What a StudyWriter finds in an existing store.bin when it opens a study: the blocks scanned and
+// indexed (a half-written end cut off), the stored runs of this study, the runs that changed under
+// a stored one, and the damaged records to warn about (see store.hpp).
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <stdexcept>
+
+#include "results/store/record_codec.hpp"
+#include "results/store/store.hpp"
+#include "results/store/store_block.hpp"
+#include "results/store/study_writer_internal.hpp"
+
+namespace mhb {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The first position >= from where `block_magic` starts, or `size` when none does.
+std::uint64_t find_magic(const StoreReader& in, std::uint64_t from, std::uint64_t size) {
+    constexpr std::uint64_t window = 1 << 16;
+    std::string chunk;
+    while (from + block_magic.size() <= size) {
+        in.read(from, std::min(window, size - from), chunk);
+        const auto found = std::string_view(chunk).find(block_magic);
+        if (found != std::string_view::npos)
+            return from + found;
+        from += chunk.size() - (block_magic.size() - 1); // a magic may straddle two windows
+    }
+    return size;
+}
+
+} // namespace
+
+void StudyWriter::load_store() {
+    const fs::path path = dir_ / StudyFiles::store;
+    std::error_code ec;
+    if (fs::is_directory(path, ec))
+        throw std::runtime_error(path.string() + ": cannot be read (" + std::strerror(EISDIR) + ")");
+    if (!fs::exists(path, ec))
+        return;
+    const std::uint64_t file_size = fs::file_size(path, ec);
+    if (ec)
+        throw std::runtime_error(path.string() + ": cannot be read (" + ec.message() + ")");
+    const StoreReader in(path);
+    constexpr std::uint64_t header_size = block_magic.size() + 8;
+    // The file is scanned through a window of a few MB, not one read per block: a store may hold
+    // 10^6 runs.
+    constexpr std::uint64_t window = std::uint64_t{4} << 20;
+    std::string buffer;
+    std::uint64_t buffer_start = 0;
+    const auto view = [&](std::uint64_t at, std::uint64_t length) {
+        if (at < buffer_start || at + length > buffer_start + buffer.size()) {
+            buffer_start = at;
+            in.read(at, std::min(std::max(length, window), file_size - at), buffer);
+        }
+        return std::string_view(buffer).substr(static_cast<std::size_t>(at - buffer_start),
+                                               static_cast<std::size_t>(length));
+    };
+    std::uint64_t position = 0;
+    std::uint64_t good_end = 0; // just past the last complete block
+    while (position + header_size + block_end.size() <= file_size) {
+        const std::string_view header = view(position, header_size);
+        bool complete = header.substr(0, block_magic.size()) == block_magic;
+        std::uint64_t size = 0;
+        if (complete) {
+            ByteReader size_reader(header.substr(block_magic.size()), path.string());
+            size = size_reader.u64();
+            // Cut short (or corrupt): never allocate for it.
+            complete = size <= file_size - position - header_size - block_end.size();
+        }
+        if (complete)
+            complete = view(position + header_size + size, block_end.size()) == block_end;
+        if (complete) {
+            // Framed whole: kept in the file (a damaged record is only left out of the index).
+            index_block(position + header_size, view(position + header_size, size));
+            position += header_size + size + block_end.size();
+            good_end = position;
+        } else {
+            // Blocks are written concurrently at reserved positions: one a killed process left
+            // half-written may be followed by complete ones. Go on from the next block start.
+            position = find_magic(in, position + 1, file_size);
+        }
+    }
+    // Cut a half-written last block off, so that new blocks never follow it.
+    if (file_size != good_end)
+        fs::resize_file(path, good_end, ec);
+    if (ec)
+        throw std::runtime_error(path.string() + ": cannot be repaired (" + ec.message() + ")");
+    store_size_ = good_end;
+    // A run whose damaged record was computed again later has its good record: nothing to say.
+    std::erase_if(damaged_, [&](const Damaged& d) { return index_.count(d.identity) != 0; });
+}
+
+void StudyWriter::index_block(std::uint64_t offset, std::string_view payload) {
+    const PayloadCheck check = check_payload(payload);
+    ByteReader reader(payload, (dir_ / StudyFiles::store).string());
+    std::string identity;
+    try {
+        identity = reader.text();
+        Stored stored;
+        stored.offset = offset;
+        stored.size = payload.size();
+        stored.slot = reader.text();
+        if (check == PayloadCheck::unchecked) {           // no checksum: it must at least decode
+            for (int skipped = 0; skipped < 2; ++skipped) // facts, notes
+                reader.text();
+            (void)decode_record(reader, true);
+        }
+        if (check != PayloadCheck::damaged) {
+            index_[identity] = std::move(stored);
+            return;
+        }
+    } catch (const std::runtime_error&) {
+    }
+    damaged_.push_back({offset, std::move(identity)});
+}
+
+void StudyWriter::check_changes(bool overwrite) {
+    std::unordered_map<std::string_view, const std::string*> slot_identity; // of the stored runs
+    for (const auto& [identity, stored] : index_)
+        slot_identity[stored.slot] = &identity;
+    std::vector<std::string> changes;
+    std::int64_t changed_runs = 0;
+    const std::int64_t count = keys_ ? keys_->count : 0;
+    // Every run's key, in parallel (a key costs a SHA-256; a study may have 10^6 runs): its
+    // identity, and whether a stored run sits in its slot with another identity.
+    identities_.resize(static_cast<std::size_t>(count));
+    std::vector<char> slot_taken(static_cast<std::size_t>(count), 0);
+    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, count, 256), [&](const auto& range) {
+        for (std::int64_t id = range.begin(); id != range.end(); ++id) {
+            RunKey wanted = keys_->key(id);
+            const auto i = static_cast<std::size_t>(id);
+            if (index_.count(wanted.identity) == 0 && slot_identity.count(wanted.slot) != 0)
+                slot_taken[i] = 1;
+            identities_[i] = std::move(wanted.identity);
+        }
+    });
+    for (std::int64_t id = 0; id < count; ++id) {
+        const auto i = static_cast<std::size_t>(id);
+        if (index_.count(identities_[i]) != 0) {
+            completed_.insert(completed_.end(), id);
+            continue;
+        }
+        if (slot_taken[i] == 0)
+            continue;
+        ++changed_runs;
+        const RunKey wanted = keys_->key(id);
+        const Stored& stored = index_.at(*slot_identity.at(wanted.slot));
+        std::string payload;
+        StoreReader(dir_ / StudyFiles::store).read(stored.offset, stored.size, payload);
+        ByteReader reader(payload, (dir_ / StudyFiles::store).string());
+        RunKey old;
+        old.identity = reader.text();
+        old.slot = reader.text();
+        old.facts = reader.text();
+        old.notes = reader.text();
+        const std::string change =
+            keys_->describe_change ? keys_->describe_change(old, wanted) : "run " + wanted.slot + " changed";
+        if (std::find(changes.begin(), changes.end(), change) == changes.end())
+            changes.push_back(change);
+    }
+    if (!keys_) {
+        for (const auto& [identity, stored] : index_)
+            if (const auto id = unkeyed_run_id(identity))
+                completed_.insert(*id);
+        return;
+    }
+    if (changes.empty() || overwrite || keys_->recompute_changed)
+        return;
+    std::string message = dir_.string() + ": " + std::to_string(changed_runs) + " stored run" +
+                          (changed_runs == 1 ? "" : "s") + " would change:";
+    constexpr std::size_t shown = 5;
+    for (std::size_t i = 0; i < changes.size() && i < shown; ++i)
+        message += "\n  " + changes[i];
+    if (changes.size() > shown)
+        message += "\n  and " + std::to_string(changes.size() - shown) + " more";
+    message += "\npass --recompute-changed to compute these runs again (keeping every other stored run), "
+               "--overwrite to discard the stored runs and start again, or choose another --out";
+    throw std::runtime_error(message);
+}
+
+void StudyWriter::warn_damaged() {
+    std::unordered_map<std::string_view, std::int64_t> run_of; // damaged identity -> run_id, or -1
+    for (const auto& d : damaged_)
+        run_of.emplace(d.identity, -1);
+    for (std::size_t id = 0; id < identities_.size() && !run_of.empty(); ++id) {
+        const auto found = run_of.find(identities_[id]);
+        if (found != run_of.end())
+            found->second = static_cast<std::int64_t>(id);
+    }
+    if (!keys_)
+        for (auto& [identity, id] : run_of)
+            id = unkeyed_run_id(identity).value_or(-1);
+    const std::string store = (dir_ / StudyFiles::store).string();
+    std::set<std::string_view> said;
+    for (const auto& d : damaged_) {
+        if (!said.insert(d.identity).second)
+            continue;
+        const std::int64_t id = run_of.at(d.identity);
+        if (id < 0)
+            warnings_.push_back(store + ": the record at byte " + std::to_string(d.offset) +
+                                " is damaged and not used (if it was a run of this study, it will be "
+                                "computed again)");
+        else
+            warnings_.push_back(store + ": the record of " + run_name(id) +
+                                " is damaged; it will be computed again");
+    }
+}
+
+std::optional<std::int64_t> StudyWriter::unkeyed_run_id(std::string_view identity) const {
+    std::int64_t id = 0;
+    if (identity.rfind("run ", 0) != 0)
+        return std::nullopt;
+    const auto [end, error] = std::from_chars(identity.data() + 4, identity.data() + identity.size(), id);
+    if (error != std::errc() ||
+        std::string_view(end, static_cast<std::size_t>(identity.data() + identity.size() - end)) !=
+            unkeyed_suffix_)
+        return std::nullopt;
+    return id;
+}
+
+} // namespace mhb
