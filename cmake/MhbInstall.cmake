@@ -19,7 +19,6 @@ set(MHB_PUBLIC_HEADERS
     problems/core/registry.hpp
     problems/core/rng.hpp
     problems/core/spec.hpp
-    problems/core/stable_hash.hpp
     problems/core/text_excerpt.hpp
     problems/objective.hpp
     problems/problem.hpp

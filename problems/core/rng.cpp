@@ -2,7 +2,13 @@
 
 #include <cmath>
 
+#include "problems/core/fnv1a.hpp"
+
 namespace mhb {
+
+std::uint64_t stable_hash(std::string_view text) noexcept {
+    return fnv1a_64(text);
+}
 
 std::uint64_t mix64(std::uint64_t x) noexcept {
     x += 0x9e3779b97f4a7c15ULL;

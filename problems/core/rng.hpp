@@ -14,9 +14,11 @@
 #include <cstdint>
 #include <string_view>
 
-#include "problems/core/stable_hash.hpp" // stable_hash, which seeds the streams
-
 namespace mhb {
+
+// FNV-1a, 64 bit (problems/core/fnv1a.hpp): stable across runs, compilers and platforms (unlike
+// std::hash).
+std::uint64_t stable_hash(std::string_view text) noexcept;
 
 // SplitMix64's finaliser: a bijective mix of 64 bits.
 std::uint64_t mix64(std::uint64_t x) noexcept;

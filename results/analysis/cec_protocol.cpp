@@ -7,7 +7,7 @@
 
 #include "results/analysis/dimension_budget.hpp"
 #include "results/analysis/evaluation_counts.hpp"
-#include "results/store/study_index.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
 
 namespace mhb {
 namespace {

@@ -25,7 +25,7 @@
 #include <string_view>
 #include <vector>
 
-#include "results/store/run_record.hpp"
+#include "results/store/run_record.hpp" // a run's record: every room reads it
 
 namespace mhb {
 

@@ -5,7 +5,7 @@
 
 #include "results/analysis/hypothesis_tests.hpp"
 #include "results/analysis/problem_medians.hpp"
-#include "results/store/csv.hpp"
+#include "results/store/csv.hpp" // CSV as the store writes it, for every room
 
 namespace mhb {
 

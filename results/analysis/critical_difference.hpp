@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "results/store/study_index.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
 
 namespace mhb {
 

@@ -7,7 +7,7 @@
 
 #include "results/analysis/evaluation_counts.hpp"
 #include "results/analysis/statistics.hpp"
-#include "results/store/csv.hpp"
+#include "results/store/csv.hpp" // CSV as the store writes it, for every room
 
 namespace mhb {
 

@@ -23,7 +23,7 @@
 
 #include <string>
 
-#include "results/store/study_index.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
 
 namespace mhb {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "results/store/study_index.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
 
 namespace mhb {
 namespace {
@@ -38,7 +38,9 @@ DimensionEvaluations DimensionEvaluations::parse(std::string_view value) {
         throw std::invalid_argument("budget: parameter 'evaluations' = " + shown + " " + why + "; write " +
                                     allowed_forms);
     };
-    const std::string count_rule = "is not an integer in [1, " + std::to_string(max_budget_evaluations) + "]";
+    // Appended rather than "..." + to_string(...) + "]": GCC 12 warns falsely (-Warray-bounds) on that.
+    std::string count_rule = "is not an integer in [1, ";
+    count_rule.append(std::to_string(max_budget_evaluations)).append("]");
     DimensionEvaluations out;
     if (const auto star = value.find('*'); star != std::string_view::npos) {
         // N*dim, or dim*N.

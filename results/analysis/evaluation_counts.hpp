@@ -15,8 +15,8 @@
 #include <optional>
 #include <string>
 
-#include "results/store/run_record.hpp"
-#include "results/store/study_index.hpp"
+#include "results/store/run_record.hpp"  // a run's record: every room reads it
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
 
 namespace mhb {
 

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "results/analysis/statistics.hpp"
-#include "results/store/csv.hpp"
+#include "results/store/csv.hpp" // CSV as the store writes it, for every room
 #include "results/table_model/table.hpp"
 
 namespace mhb {

@@ -38,7 +38,7 @@
 #include <vector>
 
 #include "results/analysis/hypothesis_tests.hpp"
-#include "results/store/study_index.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
 
 namespace mhb {
 

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "results/store/study_index.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
 
 namespace mhb {
 

@@ -4,7 +4,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "results/store/csv.hpp"
+#include "results/store/csv.hpp" // CSV as the store writes it, for every room
 
 namespace fs = std::filesystem;
 

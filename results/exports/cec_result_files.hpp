@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "results/analysis/cec_protocol.hpp"
-#include "results/store/study_index.hpp"
+#include "results/analysis/cec_protocol.hpp" // exports read analyses, not tables
+#include "results/store/study_index.hpp"     // runs, grouped: every room reads them here
 
 namespace mhb {
 

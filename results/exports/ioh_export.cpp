@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "problems/core/stable_hash.hpp"
-#include "results/store/csv.hpp"
+#include "problems/core/fnv1a.hpp"
+#include "results/store/csv.hpp" // CSV as the store writes it, for every room
 
 namespace mhb {
 
@@ -198,7 +198,7 @@ IohFunction ioh_function(const std::string& problem_spec) {
             base = 101 + static_cast<int>(found - std::begin(classic_names));
     }
     if (base == 0) // a family the table does not know (or bbob with an f it does not have)
-        base = 300 + static_cast<int>(stable_hash(spec.name) % 700);
+        base = 300 + static_cast<int>(fnv1a_64(spec.name) % 700);
     if (out.name.empty())
         out.name = file_name_part(spec.name);
 
@@ -219,13 +219,12 @@ IohFunction ioh_function(const std::string& problem_spec) {
     }
     out.id = base;
     if (!others.empty()) {
-        out.id = base * variant_scale + 1 + static_cast<int>(stable_hash(others) % (variant_scale - 1));
+        out.id = base * variant_scale + 1 + static_cast<int>(fnv1a_64(others) % (variant_scale - 1));
         // File names stay short: a long list of parameters is cut and keeps its hash.
         constexpr std::size_t longest = 120;
         if (out.name.size() + suffix.size() > longest) {
             char hash[20];
-            std::snprintf(hash, sizeof hash, "_%016llx",
-                          static_cast<unsigned long long>(stable_hash(others)));
+            std::snprintf(hash, sizeof hash, "_%016llx", static_cast<unsigned long long>(fnv1a_64(others)));
             suffix = suffix.substr(0, longest - std::min(longest, out.name.size() + 17)) + hash;
         }
         out.name += suffix;

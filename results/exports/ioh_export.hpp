@@ -26,11 +26,11 @@
 //     schwefel_2_26 113, levy 114, weierstrass 115, penalized_1 116, penalized_2 117), name as in
 //     mhbench, instance = instance (default 1), dimension = dim. raw_y is f.
 //   - pmsm: suite "mhbench", function_id 200, name "pmsm", instance 1; raw_y is f.
-//   - any other family: function_id 300 + (stable_hash of its name mod 700).
+//   - any other family: function_id 300 + (FNV-1a hash of its name mod 700).
 //   Parameters other than dim and instance (bbob: also f) make distinct functions: the name gets
 //   "_<key>_<value>" for each, in key order ("pmsm_load_2_speed_2500"), and the id becomes
-//   base * 10^6 + 1 + (stable_hash of the key=value text mod 999999), so one problem gets one id
-//   in every study, on every platform (stable_hash: FNV-1a 64, problems/core/stable_hash.hpp; a
+//   base * 10^6 + 1 + (FNV-1a hash of the key=value text mod 999999), so one problem gets one id
+//   in every study, on every platform (FNV-1a 64, problems/core/fnv1a.hpp; a
 //   name cut for length ends in that hash in hex). Two names of one export meeting on an id
 //   (about 1 in 10^6 per pair) are resolved by giving the later name, in (id, name) order, the
 //   next free id.
@@ -52,7 +52,7 @@
 #include <optional>
 #include <string>
 
-#include "results/store/study_index.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
 
 namespace mhb {
 

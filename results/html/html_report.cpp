@@ -9,7 +9,7 @@
 #include "results/html/html_page_assets.hpp"
 #include "results/html/html_svg.hpp"
 #include "results/html/html_table.hpp"
-#include "results/store/csv.hpp"
+#include "results/store/csv.hpp" // CSV as the store writes it, for every room
 
 namespace mhb {
 

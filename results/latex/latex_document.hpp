@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "results/table_model/table.hpp"
+#include "results/table_model/table.hpp" // a renderer sees tables, never runs
 
 namespace mhb {
 

@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "results/table_model/number_format.hpp"
-#include "results/table_model/table.hpp"
+#include "results/table_model/number_format.hpp" // a renderer formats per column
+#include "results/table_model/table.hpp"         // a renderer sees tables, never runs
 
 namespace mhb::latex_detail {
 

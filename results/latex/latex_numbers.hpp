@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "results/table_model/number_format.hpp"
+#include "results/table_model/number_format.hpp" // a renderer formats per column
 
 namespace mhb {
 

@@ -13,7 +13,7 @@
 
 #include "results/latex/latex_layout.hpp"
 #include "results/latex/latex_text.hpp"
-#include "results/table_model/table.hpp"
+#include "results/table_model/table.hpp" // a renderer sees tables, never runs
 
 namespace mhb {
 

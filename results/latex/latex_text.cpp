@@ -6,8 +6,8 @@
 #include <cstring>
 #include <vector>
 
-#include "results/table_model/latex_escape.hpp"
-#include "results/table_model/table.hpp"
+#include "results/table_model/latex_escape.hpp" // escaping lives beside the model
+#include "results/table_model/table.hpp"        // a renderer sees tables, never runs
 
 namespace mhb {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "results/table_model/latex_escape.hpp"
+#include "results/table_model/latex_escape.hpp" // escaping lives beside the model
 
 namespace mhb {
 

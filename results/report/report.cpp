@@ -1,3 +1,5 @@
+// The top room of results/: it includes every other room, since it alone knows the order in which a
+// report is made (results/README.md draws the rooms).
 #include "results/report/report.hpp"
 
 #include <algorithm>

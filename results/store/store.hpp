@@ -66,7 +66,7 @@ struct StudyFiles {
     static constexpr const char* store = "store.bin";
     // Format 2 (before store.bin): the journal of an unfinished study, keyed by run_id.
     static constexpr const char* journal = "journal.txt";
-    // The advisory lock of the one process writing the directory (runner/study_lock.hpp); not
+    // The advisory lock of the one process writing the directory (runner/execution/study_lock.hpp); not
     // a record: present only while a writer holds it, or after one was killed.
     static constexpr const char* lock = ".mhbench.lock";
 };
@@ -93,7 +93,7 @@ struct StoreSyncPolicy {
 };
 
 // What determines a run's record, and how a user names the run. The runner builds one per run of
-// a study (runner/run_identity.hpp); the store keeps it with the record.
+// a study (runner/execution/run_identity.hpp); the store keeps it with the record.
 struct RunKey {
     std::string identity; // SHA-256 (hex) of `facts`: the store's key
     // What a user calls "the same run": algorithm label, problem as written, budget, run index.

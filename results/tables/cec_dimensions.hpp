@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "results/analysis/cec_protocol.hpp"
-#include "results/store/study_index.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
 #include "results/tables/cec_tables.hpp"
 
 namespace mhb::tables {

@@ -21,8 +21,8 @@
 #include <vector>
 
 #include "results/analysis/cec_protocol.hpp"
-#include "results/store/study_index.hpp"
-#include "results/table_model/table.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
+#include "results/table_model/table.hpp" // the model a builder fills
 
 namespace mhb {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "results/analysis/hypothesis_tests.hpp"
-#include "results/store/study_index.hpp"
-#include "results/table_model/table.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
+#include "results/table_model/table.hpp" // the model a builder fills
 #include "results/tables/comparison_tables.hpp"
 
 namespace mhb::tables {

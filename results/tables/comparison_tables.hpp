@@ -22,8 +22,8 @@
 
 #include "results/analysis/hypothesis_tests.hpp"
 #include "results/analysis/problem_medians.hpp"
-#include "results/store/study_index.hpp"
-#include "results/table_model/table.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
+#include "results/table_model/table.hpp" // the model a builder fills
 
 namespace mhb {
 

@@ -3,7 +3,7 @@
 #include <cctype>
 #include <string>
 
-#include "results/table_model/latex_escape.hpp"
+#include "results/table_model/latex_escape.hpp" // escaping lives beside the model
 
 namespace mhb {
 

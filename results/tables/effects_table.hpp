@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "results/analysis/factorial_effects.hpp"
-#include "results/table_model/table.hpp"
+#include "results/table_model/table.hpp" // the model a builder fills
 
 namespace mhb {
 

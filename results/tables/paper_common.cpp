@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "results/store/csv.hpp"
+#include "results/store/csv.hpp" // CSV as the store writes it, for every room
 
 namespace mhb::tables {
 

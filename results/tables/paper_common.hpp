@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "results/store/study_index.hpp"
-#include "results/table_model/table.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
+#include "results/table_model/table.hpp" // the model a builder fills
 #include "results/tables/published_pmsm.hpp"
 
 namespace mhb::tables {

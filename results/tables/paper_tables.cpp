@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "results/analysis/statistics.hpp"
-#include "results/store/csv.hpp"
+#include "results/store/csv.hpp" // CSV as the store writes it, for every room
 #include "results/tables/paper_common.hpp"
 #include "results/tables/table_cells.hpp"
 

@@ -15,8 +15,8 @@
 
 #include <vector>
 
-#include "results/store/study_index.hpp"
-#include "results/table_model/table.hpp"
+#include "results/store/study_index.hpp" // runs, grouped: every room reads them here
+#include "results/table_model/table.hpp" // the model a builder fills
 
 namespace mhb {
 

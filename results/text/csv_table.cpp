@@ -1,6 +1,6 @@
 #include "results/text/csv_table.hpp"
 
-#include "results/store/csv.hpp"
+#include "results/store/csv.hpp" // CSV as the store writes it, for every room
 
 namespace mhb {
 

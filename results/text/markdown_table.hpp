@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "results/table_model/table.hpp"
+#include "results/table_model/table.hpp" // a renderer sees tables, never runs
 
 namespace mhb {
 

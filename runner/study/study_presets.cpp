@@ -7,7 +7,7 @@
 
 namespace mhb {
 namespace detail {
-// Generated from scripts/studies/*.ini (runner/study_preset_files.cpp.in).
+// Generated from scripts/studies/*.ini (runner/study/study_preset_files.cpp.in).
 const std::vector<std::pair<std::string_view, std::string_view>>& study_preset_files();
 } // namespace detail
 
