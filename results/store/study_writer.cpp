@@ -183,13 +183,17 @@ std::string StudyWriter::run_name(std::int64_t run_id) const {
     if (!keys_)
         return name;
     // The slot, "label | problem | budget | run index", as "(label, problem, budget, run k)".
-    std::string slot = keys_->key(run_id).slot;
+    // Built by appending: GCC 12 warns falsely (-Wstringop-overflow) on replace() in place here.
+    const std::string slot = keys_->key(run_id).slot;
     const auto last = slot.rfind(" | ");
-    if (last != std::string::npos)
-        slot.replace(last, 3, ", run ");
-    for (auto at = slot.find(" | "); at != std::string::npos; at = slot.find(" | ", at))
-        slot.replace(at, 3, ", ");
-    return name + " (" + slot + ")";
+    std::string readable;
+    std::size_t from = 0;
+    for (auto at = slot.find(" | "); at != std::string::npos; at = slot.find(" | ", from)) {
+        readable.append(slot, from, at - from).append(at == last ? ", run " : ", ");
+        from = at + 3;
+    }
+    readable.append(slot, from, std::string::npos);
+    return name.append(" (").append(readable).append(")");
 }
 
 } // namespace mhb
