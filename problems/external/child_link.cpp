@@ -7,9 +7,10 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "problems/core/executable_path.hpp"
 
 namespace mhb::external {
 namespace {
@@ -85,22 +86,7 @@ void close_fd(int& fd) {
 
 // Resolved before fork: getenv is not async-signal-safe.
 std::string resolve_program(const std::string& program) {
-    if (program.find('/') != std::string::npos)
-        return program;
-    const char* variable = std::getenv("PATH");
-    const std::string path = variable != nullptr ? variable : "/usr/local/bin:/usr/bin:/bin";
-    std::size_t start = 0;
-    while (start <= path.size()) {
-        const std::size_t end = std::min(path.find(':', start), path.size());
-        const std::string folder = end == start ? std::string(".") : path.substr(start, end - start);
-        const std::string candidate = folder + "/" + program;
-        struct stat status {};
-        if (::stat(candidate.c_str(), &status) == 0 && S_ISREG(status.st_mode) &&
-            ::access(candidate.c_str(), X_OK) == 0)
-            return candidate;
-        start = end + 1;
-    }
-    return {};
+    return find_executable(program).value_or(std::string());
 }
 
 ChildLink::ChildLink(const std::vector<std::string>& argv) {

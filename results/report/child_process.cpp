@@ -12,9 +12,10 @@
 #include <pthread.h>
 #include <sys/mman.h>
 #include <sys/prctl.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "problems/core/executable_path.hpp" // header-only: results/ links no other library
 
 namespace mhb {
 
@@ -66,29 +67,6 @@ int above_standard(int fd) {
     const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, STDERR_FILENO + 1);
     ::close(fd);
     return moved;
-}
-
-// The file exec would run: `program` itself when it names a path, else the first executable
-// regular file of that name in PATH.
-std::optional<std::string> resolve_program(const std::string& program) {
-    if (program.empty())
-        return std::nullopt;
-    if (program.find('/') != std::string::npos)
-        return program;
-    const char* path_variable = std::getenv("PATH");
-    const std::string path = path_variable != nullptr ? path_variable : "/usr/local/bin:/usr/bin:/bin";
-    std::size_t start = 0;
-    while (start <= path.size()) {
-        const std::size_t end = std::min(path.find(':', start), path.size());
-        const std::string folder = end == start ? std::string(".") : path.substr(start, end - start);
-        const std::string candidate = folder + "/" + program;
-        struct stat status {};
-        if (::stat(candidate.c_str(), &status) == 0 && S_ISREG(status.st_mode) &&
-            ::access(candidate.c_str(), X_OK) == 0)
-            return candidate;
-        start = end + 1;
-    }
-    return std::nullopt;
 }
 
 std::string read_all(int fd) {
@@ -253,7 +231,7 @@ ChildOutcome run_child_process(const std::string& program, const std::vector<std
     static std::mutex one_at_a_time; // the signal handling above serves one child
     const std::lock_guard<std::mutex> lock(one_at_a_time);
     ChildOutcome outcome;
-    const std::optional<std::string> path = resolve_program(program);
+    const std::optional<std::string> path = find_executable(program);
     if (!path) {
         outcome.error = program + ": not found in PATH";
         return outcome;

@@ -1,0 +1,38 @@
+// The file exec would run for a program name: the name itself when it holds a '/', else the first
+// executable regular file of that name in PATH (an empty entry of PATH is the current folder, as
+// for execvp). Header-only, so that results/ (which links no other mhbench library) finds the
+// figures' Python the way problems/external/ finds an external program. Call it before fork:
+// getenv is not async-signal-safe.
+#pragma once
+
+#include <algorithm>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace mhb {
+
+inline std::optional<std::string> find_executable(const std::string& program) {
+    if (program.empty())
+        return std::nullopt;
+    if (program.find('/') != std::string::npos)
+        return program;
+    const char* variable = std::getenv("PATH");
+    const std::string path = variable != nullptr ? variable : "/usr/local/bin:/usr/bin:/bin";
+    std::size_t start = 0;
+    while (start <= path.size()) {
+        const std::size_t end = std::min(path.find(':', start), path.size());
+        const std::string folder = end == start ? std::string(".") : path.substr(start, end - start);
+        const std::string candidate = folder + "/" + program;
+        struct stat status {};
+        if (::stat(candidate.c_str(), &status) == 0 && S_ISREG(status.st_mode) &&
+            ::access(candidate.c_str(), X_OK) == 0)
+            return candidate;
+        start = end + 1;
+    }
+    return std::nullopt;
+}
+
+} // namespace mhb
