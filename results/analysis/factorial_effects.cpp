@@ -30,13 +30,6 @@ std::string combination_text(const std::vector<std::string>& factors, std::size_
     return out;
 }
 
-std::string join(const std::vector<std::string>& items, const std::string& separator) {
-    std::string out;
-    for (const auto& item : items)
-        out += (out.empty() ? "" : separator) + item;
-    return out;
-}
-
 // One (problem, run index) with every variant's final f and known optimum (NaN where unknown).
 struct RawBlock {
     std::vector<double> f;

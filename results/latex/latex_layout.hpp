@@ -76,13 +76,6 @@ struct TableLayout {
 // Rows [first, second) of the body that one float holds.
 using RowRange = std::pair<std::size_t, std::size_t>;
 
-inline std::string join(const std::vector<std::string>& items, const std::string& separator) {
-    std::string out;
-    for (const auto& item : items)
-        out += (out.empty() ? "" : separator) + item;
-    return out;
-}
-
 // latex_cells.cpp
 bool blank(const TableCell& cell);
 std::string text_latex(const TableCell& cell, const LatexColumn& style);

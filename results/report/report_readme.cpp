@@ -153,7 +153,9 @@ const char* const other_files = R"(## Other files
   `improvements.csv`.
 )";
 
-std::string join(const std::vector<std::string>& items, const std::string& separator) {
+// Unlike join() (table_model/table.hpp), an empty item keeps its separator: a column header may be
+// empty, and the list must still show where it stands.
+std::string join_every(const std::vector<std::string>& items, const std::string& separator) {
     std::string out;
     for (std::size_t i = 0; i < items.size(); ++i)
         out += (i == 0 ? "" : separator) + items[i];
@@ -173,13 +175,13 @@ std::string tables_section(const std::vector<Table>& tables, const std::vector<s
     if (tables.empty() || formats.empty())
         return "";
     std::string out =
-        "## Tables\n\nEach table is written as `<id>." + join(formats, "`, `<id>.") +
+        "## Tables\n\nEach table is written as `<id>." + join_every(formats, "`, `<id>.") +
         "`. The CSV holds every value at full precision; a cell that shows two numbers "
         "(\"median (IQR) marker\") keeps that text. The w/t/l rows under a table are in Markdown "
         "and LaTeX only. What each column means is in the caption.\n\n"
         "| file | title | columns | caption |\n| --- | --- | --- | --- |\n";
     for (const auto& t : tables)
-        out += "| " + cell(t.id) + " | " + cell(t.title) + " | " + cell(join(t.header, "; ")) + " | " +
+        out += "| " + cell(t.id) + " | " + cell(t.title) + " | " + cell(join_every(t.header, "; ")) + " | " +
                cell(t.caption) + " |\n";
     return out + '\n';
 }

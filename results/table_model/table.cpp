@@ -73,6 +73,13 @@ std::string format_number(double value, int significant) {
     return buffer;
 }
 
+std::string join(const std::vector<std::string>& items, const std::string& separator) {
+    std::string out;
+    for (const auto& item : items)
+        out += (out.empty() ? "" : separator) + item;
+    return out;
+}
+
 std::string format_fixed(double value, int decimals) {
     if (!std::isfinite(value))
         return format_number(value);

@@ -94,6 +94,10 @@ inline constexpr const char* undefined_text = "\u2014";
 std::string format_number(double value, int significant = 5);
 std::string format_fixed(double value, int decimals);
 
+// The items with `separator` between them, for captions and notes. The separator comes only once
+// something has been written, so leading empty items leave no stray separator.
+std::string join(const std::vector<std::string>& items, const std::string& separator);
+
 // A number cell (text in the single-value format until format_columns writes the column's).
 TableCell number_cell(double value, int significant = 5);
 TableCell fixed_cell(double value, int decimals);

@@ -9,13 +9,6 @@ namespace mhb {
 
 namespace {
 
-std::string join(const std::vector<std::string>& items, const std::string& separator) {
-    std::string out;
-    for (const auto& item : items)
-        out += (out.empty() ? "" : separator) + item;
-    return out;
-}
-
 // An effect's or design's name for LaTeX: escaped, with the " x " of an interaction as a times sign
 // and 2^k as a power.
 std::string latex_times(const std::string& name) {
