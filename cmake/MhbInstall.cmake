@@ -40,6 +40,18 @@ string(SHA256 mhb_contract_sha256 "${mhb_contract_text}")
 string(SUBSTRING ${mhb_contract_sha256} 0 16 MHB_PLUGIN_CONTRACT)
 target_compile_definitions(mhb_runner PRIVATE MHB_PLUGIN_CONTRACT="${MHB_PLUGIN_CONTRACT}")
 
+# The contract's sources are compiled each alone, out of the unity batches (cmake/MhbUnityBuild.cmake):
+# the test that every function of the contract is exported to plug-ins
+# (tests/plugin_modules/exported_contract_test.sh) tells which source defines a symbol by its object.
+foreach(header IN LISTS MHB_PUBLIC_HEADERS)
+    string(REGEX REPLACE "\\.hpp$" ".cpp" source ${header})
+    string(REGEX MATCH "^[a-z]+" folder ${header})
+    if(EXISTS ${PROJECT_SOURCE_DIR}/${source})
+        set_source_files_properties(${PROJECT_SOURCE_DIR}/${source} DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}
+            PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+    endif()
+endforeach()
+
 add_library(mhb_api INTERFACE)
 add_library(mhbench::mhbench ALIAS mhb_api)
 set_target_properties(mhb_api PROPERTIES EXPORT_NAME mhbench)

@@ -42,9 +42,9 @@ Eigen::VectorXd power_weights(double base, double exponent_scale, Eigen::Index d
 }
 
 // f10: sum 10^(6 (i-1)/(D-1)) z_i^2, z = T_osz(R (x - x_opt)).
-class Ellipsoid final : public RotatedFunction {
+class RotatedEllipsoid final : public RotatedFunction {
 public:
-    explicit Ellipsoid(const InstanceSetup& s)
+    explicit RotatedEllipsoid(const InstanceSetup& s)
         : RotatedFunction(legacy_xopt(s.rseed, s.dimension), legacy_rotation(s.rseed + 1000000, s.dimension),
                           s.f_opt),
           weights_(power_weights(1.0e6, 1.0, s.dimension)) {}
@@ -131,7 +131,7 @@ private:
 std::unique_ptr<Function> make_ill_conditioned(const InstanceSetup& s) {
     switch (s.function) {
     case 10:
-        return std::make_unique<Ellipsoid>(s);
+        return std::make_unique<RotatedEllipsoid>(s);
     case 11:
         return std::make_unique<Discus>(s);
     case 12:

@@ -56,7 +56,7 @@ private:
     KnownOptimum optimum_;
 };
 
-std::string function_help() {
+std::string bbob_function_help() {
     std::string s = "function number:";
     for (int f = 0; f < 24; ++f)
         s.append(f == 0 ? " " : ", ").append(std::to_string(f + 1)).append(" ").append(bbob_names[f]);
@@ -73,7 +73,7 @@ void register_bbob(ProblemRegistry& registry) {
          "f* and x* known",
          "Hansen, Finck, Ros, Auger (2009), Real-parameter black-box optimization benchmarking 2009: "
          "noiseless functions definitions, INRIA RR-6829; instances as in COCO (numbbo/coco)",
-         {ParameterInfo::integer("f", 1, 1, 24, function_help()).ranged(),
+         {ParameterInfo::integer("f", 1, 1, 24, bbob_function_help()).ranged(),
           ParameterInfo::integer("dim", 10, 2, bbob::max_dimension,
                                  "dimension (COCO's 2, 3, 5, 10, 20, 40 and "
                                  "any other from 2 to 40)"),

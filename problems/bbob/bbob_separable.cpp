@@ -36,9 +36,9 @@ private:
 };
 
 // f2: sum 10^(6 (i-1)/(D-1)) z_i^2, z = T_osz(x - x_opt).
-class Ellipsoid final : public Function {
+class SeparableEllipsoid final : public Function {
 public:
-    explicit Ellipsoid(const InstanceSetup& s)
+    explicit SeparableEllipsoid(const InstanceSetup& s)
         : xopt_(legacy_xopt(s.rseed, s.dimension)), weights_(s.dimension), fopt_(s.f_opt) {
         for (Eigen::Index i = 0; i < s.dimension; ++i)
             weights_[i] = std::pow(1.0e6, static_cast<double>(i) / (static_cast<double>(s.dimension) - 1.0));
@@ -147,7 +147,7 @@ std::unique_ptr<Function> make_separable(const InstanceSetup& s) {
     case 1:
         return std::make_unique<Sphere>(s);
     case 2:
-        return std::make_unique<Ellipsoid>(s);
+        return std::make_unique<SeparableEllipsoid>(s);
     case 3:
         return std::make_unique<Rastrigin>(s);
     case 4:

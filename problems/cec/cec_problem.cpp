@@ -47,7 +47,7 @@ private:
     KnownOptimum optimum_;
 };
 
-std::string function_help(cec::Suite suite) {
+std::string cec_function_help(cec::Suite suite) {
     std::string s = "function number, as in the official code:";
     const auto& all = cec::recipes(suite);
     for (std::size_t f = 0; f < all.size(); ++f) {
@@ -119,7 +119,7 @@ void register_cec(ProblemRegistry& registry) {
          "CEC 2017 special session on single objective bound constrained real-parameter numerical "
          "optimization, NTU technical report; code and data: P-N-Suganthan/CEC2017-BoundContrained "
          "(commit 2c54cad)",
-         {ParameterInfo::integer("f", 1, 1, 30, function_help(Suite::cec2017)).ranged(),
+         {ParameterInfo::integer("f", 1, 1, 30, cec_function_help(Suite::cec2017)).ranged(),
           ParameterInfo::integer("dim", 10, 2, cec::max_dimension, dimension_help(Suite::cec2017))},
          factory(Suite::cec2017)});
     registry.add(
@@ -130,7 +130,7 @@ void register_cec(ProblemRegistry& registry) {
          "Kumar, Price, Mohamed, Hadi, Suganthan (2021), Problem definitions and evaluation criteria "
          "for the CEC 2022 special session on single objective bound constrained numerical "
          "optimization, NTU technical report; code and data: P-N-Suganthan/2022-SO-BO (commit de20505)",
-         {ParameterInfo::integer("f", 1, 1, 12, function_help(Suite::cec2022)).ranged(),
+         {ParameterInfo::integer("f", 1, 1, 12, cec_function_help(Suite::cec2022)).ranged(),
           ParameterInfo::integer("dim", 10, 2, 20, dimension_help(Suite::cec2022))},
          factory(Suite::cec2022)});
 }

@@ -170,7 +170,7 @@ Eigen::Index OutputErrorModel::rows() const {
 
 namespace {
 
-void require_size(const Eigen::Ref<const Eigen::VectorXd>& theta, Eigen::Index n) {
+void require_theta_size(const Eigen::Ref<const Eigen::VectorXd>& theta, Eigen::Index n) {
     if (theta.size() != n)
         throw std::logic_error("pmsm output-error model: theta has " + std::to_string(theta.size()) +
                                " coordinates, the model " + std::to_string(n));
@@ -179,7 +179,7 @@ void require_size(const Eigen::Ref<const Eigen::VectorXd>& theta, Eigen::Index n
 } // namespace
 
 double OutputErrorModel::fitness(const Eigen::Ref<const Eigen::VectorXd>& theta) const {
-    require_size(theta, parameters());
+    require_theta_size(theta, parameters());
     Params p;
     if (!make_params(theta, fit_dead_time_, p))
         return infinity;
@@ -197,7 +197,7 @@ double OutputErrorModel::fitness(const Eigen::Ref<const Eigen::VectorXd>& theta)
 }
 
 void OutputErrorModel::residuals(const Eigen::Ref<const Eigen::VectorXd>& theta, Eigen::VectorXd& r) const {
-    require_size(theta, parameters());
+    require_theta_size(theta, parameters());
     r.resize(2 * rows_);
     Params p;
     if (!make_params(theta, fit_dead_time_, p)) {
@@ -220,7 +220,7 @@ void OutputErrorModel::residuals(const Eigen::Ref<const Eigen::VectorXd>& theta,
 
 void OutputErrorModel::simulate(const Eigen::Ref<const Eigen::VectorXd>& theta, std::size_t which,
                                 std::vector<double>& id, std::vector<double>& iq) const {
-    require_size(theta, parameters());
+    require_theta_size(theta, parameters());
     if (which >= series_.size())
         throw std::logic_error("pmsm output-error model: dataset " + std::to_string(which) + " of " +
                                std::to_string(series_.size()));

@@ -12,7 +12,7 @@ namespace mhb::pmsm {
 
 namespace {
 
-void require_size(const Eigen::VectorXd& x, Eigen::Index n, const std::string& what) {
+void require_model_size(const Eigen::VectorXd& x, Eigen::Index n, const std::string& what) {
     if (x.size() != n)
         throw std::invalid_argument("pmsm: " + what + " has " + std::to_string(x.size()) +
                                     " coordinates, the output-error model " + std::to_string(n));
@@ -26,11 +26,11 @@ OutputErrorProblem::OutputErrorProblem(OutputErrorModel model, Box bounds,
     : model_(std::move(model)), box_(std::move(bounds)), truth_(std::move(truth)) {
     box_.validate("pmsm");
     const Eigen::Index n = model_.parameters();
-    require_size(box_.lower, n, "the search box");
+    require_model_size(box_.lower, n, "the search box");
     if (truth_)
-        require_size(*truth_, n, "the true parameter vector");
+        require_model_size(*truth_, n, "the true parameter vector");
     for (const Eigen::VectorXd& start : reference_starts) {
-        require_size(start, n, "a reference start");
+        require_model_size(start, n, "a reference start");
         if (!start.allFinite())
             throw std::invalid_argument(
                 "pmsm: a reference start of the output-error refinement is not finite");

@@ -26,7 +26,7 @@ const std::array<CecProtocol, 2>& protocols() {
     return all;
 }
 
-std::string_view trim(std::string_view s) {
+std::string_view trim_line(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r'))
         s.remove_prefix(1);
     while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
@@ -88,13 +88,13 @@ std::optional<std::string> study_protocol(std::string_view study_text) {
     std::size_t start = 0;
     while (start < study_text.size()) {
         const auto end = std::min(study_text.find('\n', start), study_text.size());
-        std::string_view line = trim(study_text.substr(start, end - start));
+        std::string_view line = trim_line(study_text.substr(start, end - start));
         start = end + 1;
         if (line.substr(0, 8) != "protocol")
             continue;
-        line = trim(line.substr(8));
+        line = trim_line(line.substr(8));
         if (!line.empty() && line.front() == '=')
-            return std::string(trim(line.substr(1)));
+            return std::string(trim_line(line.substr(1)));
     }
     return std::nullopt;
 }

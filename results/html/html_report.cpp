@@ -9,7 +9,8 @@
 #include "results/html/html_page_assets.hpp"
 #include "results/html/html_svg.hpp"
 #include "results/html/html_table.hpp"
-#include "results/store/csv.hpp" // CSV as the store writes it, for every room
+#include "results/store/context_ini.hpp" // the page shows where the study was run
+#include "results/store/csv.hpp"         // CSV as the store writes it, for every room
 
 namespace mhb {
 
@@ -93,27 +94,6 @@ std::string sentence(std::string text, bool capital = true) {
     return text;
 }
 
-// "key = value" lines of context.ini, in file order.
-std::vector<std::pair<std::string, std::string>> ini_pairs(const std::string& text) {
-    std::vector<std::pair<std::string, std::string>> pairs;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        const std::size_t end = std::min(text.find('\n', start), text.size());
-        const std::string line = text.substr(start, end - start);
-        start = end + 1;
-        const std::size_t eq = line.find('=');
-        if (line.empty() || line[0] == '#' || eq == std::string::npos)
-            continue;
-        const auto trim = [](std::string s) {
-            const std::size_t a = s.find_first_not_of(" \t\r");
-            const std::size_t b = s.find_last_not_of(" \t\r");
-            return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-        };
-        pairs.emplace_back(trim(line.substr(0, eq)), trim(line.substr(eq + 1)));
-    }
-    return pairs;
-}
-
 std::string context_section(const HtmlReportContent& content) {
     std::string out = "<section id=\"context\">\n" + heading(2, "Study context");
     // The facts a reader checks first, then both files whole.
@@ -126,7 +106,7 @@ std::string context_section(const HtmlReportContent& content) {
                                                          {"cpu", "CPU"},
                                                          {"date_utc", "Date (UTC)"},
                                                          {"command", "Command"}};
-    const auto pairs = ini_pairs(content.context_text);
+    const auto pairs = context_entries(content.context_text);
     std::string facts;
     for (const auto& [key, label] : shown)
         for (const auto& [k, v] : pairs)

@@ -5,6 +5,7 @@
 
 #include "results/latex/latex_table.hpp"
 #include "results/latex/latex_text.hpp"
+#include "results/store/context_ini.hpp" // the report shows where the study was run
 
 namespace mhb {
 
@@ -23,28 +24,12 @@ std::string breakable(const std::string& text) {
     return out;
 }
 
-std::string trim(const std::string& text) {
-    const std::size_t first = text.find_first_not_of(" \t\r");
-    if (first == std::string::npos)
-        return "";
-    return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
-
 // context.ini as a two-column table of key and value (values wrap). Of the history of a resumed
 // study ("session" lines, first first), the first and the latest session are shown.
 std::string context_table(const std::string& context, std::string& date) {
     std::string rows;
     std::vector<std::string> sessions;
-    std::size_t start = 0;
-    while (start < context.size()) {
-        const std::size_t end = std::min(context.find('\n', start), context.size());
-        const std::string line = trim(context.substr(start, end - start));
-        start = end + 1;
-        const std::size_t equals = line.find('=');
-        if (line.empty() || line[0] == '#' || line[0] == ';' || equals == std::string::npos)
-            continue;
-        const std::string key = trim(line.substr(0, equals));
-        const std::string value = trim(line.substr(equals + 1));
+    for (const auto& [key, value] : context_entries(context)) {
         if (key == "date_utc")
             date = value;
         if (key == "session")

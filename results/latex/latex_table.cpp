@@ -15,10 +15,9 @@
 #include "results/latex/latex_text.hpp"
 #include "results/table_model/table.hpp" // a renderer sees tables, never runs
 
-namespace mhb {
-
-using namespace latex_detail; // this file writes what the layout's files decide
-
+// The helpers live in latex_detail beside the layout steps they read (not behind a using-directive,
+// which a unity build would carry into the next source of its batch).
+namespace mhb::latex_detail {
 namespace {
 
 // Text split where a line of `width` ends: at the last break (a space, \allowbreak) that fits.
@@ -237,8 +236,12 @@ std::string write_part(const Table& table, const TableLayout& layout, std::size_
 }
 
 } // namespace
+} // namespace mhb::latex_detail
+
+namespace mhb {
 
 std::string render_latex(const Table& table) {
+    using namespace latex_detail; // this function writes what the layout's files decide
     TableLayout layout = lay_out_columns(table);
     split_into_parts(layout);
     const std::string title = latex_escape(caption_title(table));

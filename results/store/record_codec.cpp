@@ -48,7 +48,7 @@ void write_improvements(ByteWriter& out, const ImprovementTrace& trace) {
     out.text(body.bytes());
 }
 
-ImprovementTrace read_improvements(std::string_view bytes) {
+ImprovementTrace decode_improvements(std::string_view bytes) {
     ByteReader in(bytes, "record: improvements");
     ImprovementTrace trace;
     const std::uint64_t n = count(in);
@@ -207,7 +207,7 @@ DecodedRecord decode_record(ByteReader& in, bool from_store) {
             break;
         const std::string body = in.text();
         if (section == improvements_section)
-            r.improvements = read_improvements(body);
+            r.improvements = decode_improvements(body);
         // Any other section is one a newer mhbench added: skipped, as this one was by older ones.
     }
     return d;

@@ -249,7 +249,7 @@ void read_trajectories(const CsvTable& trajectories, const RunPositions& index, 
     }
 }
 
-void read_improvements(const CsvTable& improvements, const RunPositions& index, StudyData& data) {
+void read_improvements_csv(const CsvTable& improvements, const RunPositions& index, StudyData& data) {
     const std::size_t event = improvements.column("event");
     const std::size_t evaluations = improvements.column("evaluations");
     const std::size_t f = improvements.column("f");
@@ -300,7 +300,7 @@ StudyData load_study(const fs::path& dir) {
     read_trajectories(read_rendered_csv(dir, StudyFiles::trajectories, marker), index, data);
     // Studies written before improvements were recorded have no such file: their runs keep none.
     if (fs::exists(dir / StudyFiles::improvements))
-        read_improvements(read_rendered_csv(dir, StudyFiles::improvements, marker), index, data);
+        read_improvements_csv(read_rendered_csv(dir, StudyFiles::improvements, marker), index, data);
     read_timings(read_rendered_csv(dir, StudyFiles::timings, marker), index, data);
     return data;
 }

@@ -24,6 +24,26 @@
 namespace mhb {
 namespace fs = std::filesystem;
 
+// The lines some runs contribute to each result file. Not in the anonymous namespace: StudyWriter's
+// RenderedChunk (store.hpp) holds one, and a member's type must have linkage where the class has.
+struct RenderedLines {
+    std::string run_line;
+    std::string curve_lines;
+    std::string checkpoint_lines;
+    std::string trajectory_lines;
+    std::string improvement_lines;
+    std::string timing_line;
+
+    void append(const RenderedLines& other) {
+        run_line += other.run_line;
+        curve_lines += other.curve_lines;
+        checkpoint_lines += other.checkpoint_lines;
+        trajectory_lines += other.trajectory_lines;
+        improvement_lines += other.improvement_lines;
+        timing_line += other.timing_line;
+    }
+};
+
 namespace {
 
 std::string join_numbers(const std::vector<double>& values) {
@@ -35,25 +55,6 @@ std::string join_numbers(const std::vector<double>& values) {
     }
     return out;
 }
-
-// The lines some runs contribute to each result file.
-struct Block {
-    std::string run_line;
-    std::string curve_lines;
-    std::string checkpoint_lines;
-    std::string trajectory_lines;
-    std::string improvement_lines;
-    std::string timing_line;
-
-    void append(const Block& other) {
-        run_line += other.run_line;
-        curve_lines += other.curve_lines;
-        checkpoint_lines += other.checkpoint_lines;
-        trajectory_lines += other.trajectory_lines;
-        improvement_lines += other.improvement_lines;
-        timing_line += other.timing_line;
-    }
-};
 
 // A run's line of runs.csv, for the study's parameter columns.
 std::string run_line(const RunRecord& r, const std::vector<std::string>& columns) {
@@ -88,8 +89,8 @@ std::string run_line(const RunRecord& r, const std::vector<std::string>& columns
 }
 
 // The lines a run contributes to each result file, for the study's parameter columns.
-Block render(const RunRecord& r, double wall_seconds, const std::vector<std::string>& columns) {
-    Block block;
+RenderedLines render(const RunRecord& r, double wall_seconds, const std::vector<std::string>& columns) {
+    RenderedLines block;
     const std::string id = std::to_string(r.run_id);
     block.run_line = run_line(r, columns);
     for (const auto& p : r.curve) {
@@ -123,7 +124,7 @@ Block render(const RunRecord& r, double wall_seconds, const std::vector<std::str
 }
 
 // Adds a run's lines to `text` and counts it in `summary`.
-void add_run(Block& text, StudySummary& summary, DecodedRecord decoded,
+void add_run(RenderedLines& text, StudySummary& summary, DecodedRecord decoded,
              const std::vector<std::string>& columns) {
     RunRecord& record = decoded.record;
     text.append(render(record, decoded.wall_seconds, columns));
@@ -240,7 +241,7 @@ struct ResultFiles {
     Output improvements;
     Output timings;
 
-    void put(const Block& text) {
+    void put(const RenderedLines& text) {
         runs.put(text.run_line);
         curves.put(text.curve_lines);
         checkpoints.put(text.checkpoint_lines);
@@ -369,7 +370,7 @@ DecodedRecord StudyWriter::stored_record(std::int64_t run_id, std::string_view p
 }
 
 struct StudyWriter::RenderedChunk {
-    Block text;
+    RenderedLines text;
     StudySummary summary;
 };
 

@@ -46,8 +46,8 @@ AgainstControl against_control(const std::vector<std::vector<double>>& medians,
     return out;
 }
 
-void add_algorithm_rows(Table& t, const StudyIndex& index, const FriedmanResult& friedman,
-                        const AgainstControl& tests, std::size_t control) {
+void add_ranking_rows(Table& t, const StudyIndex& index, const FriedmanResult& friedman,
+                      const AgainstControl& tests, std::size_t control) {
     const auto& algorithms = index.algorithms();
     double best_rank = INFINITY;
     for (double r : friedman.average_ranks)
@@ -113,8 +113,8 @@ std::optional<Table> across_problems_table(const StudyIndex& index, const Compar
               index.label(options.reference);
     t.header = {"Algorithm",     "Average rank",         "Post-hoc p (Holm)", "Signed-rank V",
                 "Signed-rank p", "Signed-rank p (Holm)", "Signed-rank test"};
-    add_algorithm_rows(t, index, friedman, against_control(medians, friedman, problems.size(), control),
-                       control);
+    add_ranking_rows(t, index, friedman, against_control(medians, friedman, problems.size(), control),
+                     control);
     across_problems_latex_layout(t);
     t.caption = across_problems_caption(index, options, friedman, problems.size());
     format_columns(t);

@@ -113,8 +113,8 @@ void add_published_rows(ParameterRows& rows, const std::string& who,
 }
 
 // One algorithm's rows: mean and std of each parameter, their errors, and the paper's values.
-void add_algorithm_rows(ParameterRows& rows, const StudyIndex& index, const PmsmProblem& p,
-                        const std::string& algorithm, const RunRecord& first) {
+void add_parameter_error_rows(ParameterRows& rows, const StudyIndex& index, const PmsmProblem& p,
+                              const std::string& algorithm, const RunRecord& first) {
     const RunGroup& g = *index.find(p.spec, algorithm);
     const std::size_t d = rows.names.size();
     const std::vector<double>& truth = first.true_parameters;
@@ -179,7 +179,7 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
             rows.add("theta* (least squares)", "error % vs true", relative_pct(theta, truth), percents);
     }
     for (const auto& a : algorithms)
-        add_algorithm_rows(rows, index, p, a, first);
+        add_parameter_error_rows(rows, index, p, a, first);
     t.caption = parameter_caption(index, p);
     t.latex_column(0).heading = true; // each algorithm heads its rows: a column less
     t.latex_column(1).key = true;
