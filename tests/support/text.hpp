@@ -1,8 +1,10 @@
-// Small text checks shared by the tests (no std::regex: GCC 12 warns inside <regex> under the
-// sanitizer builds).
+// Small text checks shared by the tests: whether a number prints as nan, how often a piece of text
+// occurs (no std::regex: GCC 12 warns inside <regex> under the sanitizer builds).
 #pragma once
 
 #include <cctype>
+#include <cstddef>
+#include <string>
 #include <string_view>
 
 namespace mhb::test_support {
@@ -18,6 +20,14 @@ inline bool prints_nan(std::string_view text) {
             return true;
     }
     return false;
+}
+
+// How many times `what` occurs in `text`, overlapping occurrences included.
+inline std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+        ++n;
+    return n;
 }
 
 } // namespace mhb::test_support

@@ -15,9 +15,12 @@
 #include "algorithms/sampling.hpp"
 #include "baselines_test_problems.hpp"
 #include "problems/problem_registry.hpp"
+#include "support/budgets.hpp"
 
 namespace mhb {
 namespace {
+
+using mhb::test_support::evaluations;
 
 struct Result {
     double gap = 0.0; // best f - f*
@@ -26,13 +29,9 @@ struct Result {
     std::vector<IterationPoint> trace;
 };
 
-Result run(const std::string& spec, const Problem& problem, Budget budget, std::uint64_t seed) {
+Result run_for_accuracy(const std::string& spec, const Problem& problem, Budget budget, std::uint64_t seed) {
     const test::RunOutcome r = test::run_spec(spec, problem, budget, seed);
     return {r.best_f - problem.known_optimum()->f, r.evaluations, r.evaluations_to_target, r.iteration_trace};
-}
-
-Budget evaluations(std::int64_t n) {
-    return Budget{n, std::nullopt, std::nullopt};
 }
 
 // Checks that every seed 1..5 reaches `gap` (relative to f* when `relative`).
@@ -40,7 +39,7 @@ void expect_reaches(const std::string& spec, const Problem& problem, std::int64_
                     bool relative = false) {
     const double scale = relative ? problem.known_optimum()->f : 1.0;
     for (std::uint64_t seed = 1; seed <= 5; ++seed) {
-        const Result r = run(spec, problem, evaluations(budget), seed);
+        const Result r = run_for_accuracy(spec, problem, evaluations(budget), seed);
         EXPECT_EQ(r.evaluations, budget) << spec;
         EXPECT_LE(r.gap, gap * scale) << spec << " on " << problem.name() << ", seed " << seed;
     }
@@ -50,7 +49,7 @@ TEST(BaselinesAccuracy, CmaesSolvesTheRotatedEllipsoidTo1e10Within2e4Evaluations
     // The figure. Hansen's published runs need about 6000 evaluations on 10-D felli.
     const test::RotatedEllipsoid ellipsoid(10, 1e6, 3);
     for (std::uint64_t seed = 1; seed <= 5; ++seed) {
-        const Result r = run("cmaes", ellipsoid, Budget{20000, std::nullopt, 1e-10}, seed);
+        const Result r = run_for_accuracy("cmaes", ellipsoid, Budget{20000, std::nullopt, 1e-10}, seed);
         ASSERT_TRUE(r.to_target.has_value()) << "seed " << seed << " ended at gap " << r.gap;
         EXPECT_LE(*r.to_target, 20000);
         EXPECT_LE(r.gap, 1e-10);
@@ -61,7 +60,7 @@ TEST(BaselinesAccuracy, CmaesIpopDoublesTheOffspringAfterEachRestart) {
     // On the 10-D sphere the first run (lambda = 4 + floor(3 ln 10) = 10) meets TolFun long before
     // 2e4 evaluations, so the trace must show generations of 10, then 20 (and maybe 40) evaluations.
     const auto sphere = builtin_problems().create("sphere:dim=10");
-    const Result r = run("cmaes", *sphere, evaluations(20000), 1);
+    const Result r = run_for_accuracy("cmaes", *sphere, evaluations(20000), 1);
     std::vector<std::int64_t> steps;
     for (std::size_t i = 1; i < r.trace.size(); ++i)
         steps.push_back(r.trace[i].evaluations - r.trace[i - 1].evaluations);
@@ -70,7 +69,7 @@ TEST(BaselinesAccuracy, CmaesIpopDoublesTheOffspringAfterEachRestart) {
     EXPECT_NE(std::find(steps.begin(), steps.end(), 20), steps.end());
     EXPECT_TRUE(std::is_sorted(steps.begin(), steps.end() - 1)); // the last one may be cut by the budget
     // Without restarts the run ends at its first stop criterion, below the budget.
-    EXPECT_LT(run("cmaes:restarts=none", *sphere, evaluations(20000), 1).evaluations, 20000);
+    EXPECT_LT(run_for_accuracy("cmaes:restarts=none", *sphere, evaluations(20000), 1).evaluations, 20000);
 }
 
 TEST(BaselinesAccuracy, BobyqaFindsTheLeastSquaresOptimumOfTheSteadyStateQuadratic) {
@@ -116,7 +115,7 @@ TEST(BaselinesAccuracy, LshadeReducesItsPopulationLinearlyTo4) {
     // N_init = 18 D = 180 at D = 10; the generation sizes fall to N_min = 4 by the end of the budget.
     const auto sphere = builtin_problems().create("sphere:dim=10");
     for (const Budget budget : {evaluations(20000), Budget{std::nullopt, 200, std::nullopt}}) {
-        const Result r = run("lshade", *sphere, budget, 1);
+        const Result r = run_for_accuracy("lshade", *sphere, budget, 1);
         ASSERT_GE(r.trace.size(), 3u);
         EXPECT_EQ(r.trace[0].evaluations, 180);
         EXPECT_EQ(r.trace[1].evaluations - r.trace[0].evaluations, 180);
@@ -173,7 +172,7 @@ TEST(BaselinesAccuracy, EveryRegisteredOptimiserBeatsRandomSearch) {
                 continue;
             std::vector<double> gaps;
             for (std::uint64_t seed = 1; seed <= 5; ++seed)
-                gaps.push_back(run(spec, *problem, evaluations(budget), seed).gap);
+                gaps.push_back(run_for_accuracy(spec, *problem, evaluations(budget), seed).gap);
             if (spec == "random-search") // the registered baseline is this floor, draw for draw
                 EXPECT_EQ(median(gaps), floor) << problem->name();
             else

@@ -37,7 +37,7 @@ std::vector<std::shared_ptr<const Problem>> problem_set() {
 
 using Outcome = test::RunOutcome;
 
-Outcome run(const std::string& spec, const Problem& problem, Budget budget, std::uint64_t seed) {
+Outcome run_matrix_case(const std::string& spec, const Problem& problem, Budget budget, std::uint64_t seed) {
     return test::run_spec(spec, problem, budget, seed);
 }
 
@@ -56,8 +56,8 @@ TEST(BaselinesMatrix, SpendsTheEvaluationBudgetExactlyAndIsDeterministic) {
     for (const auto& spec : algorithm_specs()) {
         for (const auto& problem : problem_set()) {
             const std::string where = spec + " on " + problem->name();
-            const Outcome a = run(spec, *problem, budget, 42);
-            const Outcome b = run(spec, *problem, budget, 42);
+            const Outcome a = run_matrix_case(spec, *problem, budget, 42);
+            const Outcome b = run_matrix_case(spec, *problem, budget, 42);
             // `cmaes:restarts=none` may end early by design; everything else spends the budget.
             if (spec == "cmaes:restarts=none")
                 EXPECT_LE(a.evaluations, 1500) << where;
@@ -77,7 +77,7 @@ TEST(BaselinesMatrix, SpendsTheEvaluationBudgetExactlyAndIsDeterministic) {
             // samples a Sobol sequence, so only its (unimportant) first point depends on the seed.
             if (spec.find("GN_DIRECT_L") == std::string::npos &&
                 spec.find("GN_MLSL_LDS") == std::string::npos) {
-                const Outcome c = run(spec, *problem, budget, 43);
+                const Outcome c = run_matrix_case(spec, *problem, budget, 43);
                 EXPECT_NE(a.best_x, c.best_x) << where;
             }
         }
@@ -89,7 +89,7 @@ TEST(BaselinesMatrix, StopsExactlyAtAnIterationBudget) {
     for (const auto& spec : algorithm_specs()) {
         for (const auto& problem : problem_set()) {
             const std::string where = spec + " on " + problem->name();
-            const Outcome a = run(spec, *problem, budget, 5);
+            const Outcome a = run_matrix_case(spec, *problem, budget, 5);
             if (spec == "cmaes:restarts=none")
                 EXPECT_LE(a.iterations, 6) << where;
             else
@@ -117,12 +117,13 @@ TEST(BaselinesMatrix, TwoThreadsGiveTheSameRunsAsOne) {
                 tasks.push_back({s, p, seed});
     std::vector<Outcome> serial(tasks.size()), parallel(tasks.size());
     for (std::size_t t = 0; t < tasks.size(); ++t)
-        serial[t] = run(specs[tasks[t].spec], *problems[tasks[t].problem], budget, tasks[t].seed);
+        serial[t] = run_matrix_case(specs[tasks[t].spec], *problems[tasks[t].problem], budget, tasks[t].seed);
     tbb::task_arena arena(2);
     arena.execute([&] {
         tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t i) {
             const std::size_t t = tasks.size() - 1 - i;
-            parallel[t] = run(specs[tasks[t].spec], *problems[tasks[t].problem], budget, tasks[t].seed);
+            parallel[t] =
+                run_matrix_case(specs[tasks[t].spec], *problems[tasks[t].problem], budget, tasks[t].seed);
         });
     });
     for (std::size_t t = 0; t < tasks.size(); ++t)

@@ -6,9 +6,12 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem_registry.hpp"
+#include "support/budgets.hpp"
 
 namespace mhb {
 namespace {
+
+using mhb::test_support::evaluations;
 
 // Records every point it is asked about (single-threaded test use only).
 class RecordingBox final : public Problem {
@@ -27,18 +30,12 @@ private:
     Box box_;
 };
 
-std::unique_ptr<Objective> run(const Optimizer& optimizer, const Problem& problem, Budget budget,
-                               std::uint64_t seed) {
+std::unique_ptr<Objective> run_random_search(const Optimizer& optimizer, const Problem& problem,
+                                             Budget budget, std::uint64_t seed) {
     auto objective = std::make_unique<Objective>(problem, budget, optimizer.bound_policy());
     Rng rng(seed);
     run_to_budget(optimizer, *objective, rng);
     return objective;
-}
-
-Budget evaluations(std::int64_t n) {
-    Budget b;
-    b.max_evaluations = n;
-    return b;
 }
 
 TEST(RandomSearch, SpendsBatchPerIterationPlusOneBatchToStart) {
@@ -46,20 +43,20 @@ TEST(RandomSearch, SpendsBatchPerIterationPlusOneBatchToStart) {
     RecordingBox problem;
     Budget budget;
     budget.max_iterations = 10;
-    const auto objective = run(*optimizer, problem, budget, 1);
+    const auto objective = run_random_search(*optimizer, problem, budget, 1);
     EXPECT_EQ(objective->evaluations(), 7 + 10 * 7);
     ASSERT_EQ(objective->iteration_trace().size(), 11u); // iteration 0 (initial batch) to 10
     for (std::size_t i = 0; i < objective->iteration_trace().size(); ++i)
         EXPECT_EQ(objective->iteration_trace()[i].evaluations, 7 * static_cast<std::int64_t>(i + 1));
     // An evaluation budget that ends mid-batch is spent exactly.
-    EXPECT_EQ(run(*optimizer, problem, evaluations(30), 1)->evaluations(), 30);
+    EXPECT_EQ(run_random_search(*optimizer, problem, evaluations(30), 1)->evaluations(), 30);
 }
 
 TEST(RandomSearch, SamplesUniformlyInsideTheBoxAndIsReproducible) {
     const auto optimizer = builtin_algorithms().create("random-search");
     EXPECT_EQ(optimizer->name(), "random-search");
     RecordingBox problem;
-    const auto objective = run(*optimizer, problem, evaluations(20000), 99);
+    const auto objective = run_random_search(*optimizer, problem, evaluations(20000), 99);
     ASSERT_EQ(problem.seen.size(), 20000u);
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
     for (const auto& x : problem.seen) {
@@ -79,7 +76,7 @@ TEST(RandomSearch, SamplesUniformlyInsideTheBoxAndIsReproducible) {
 
     // Same seed, same samples.
     RecordingBox again;
-    const auto repeated = run(*optimizer, again, evaluations(20000), 99);
+    const auto repeated = run_random_search(*optimizer, again, evaluations(20000), 99);
     EXPECT_EQ(again.seen, problem.seen);
     EXPECT_EQ(repeated->best_f(), objective->best_f());
 }
@@ -89,7 +86,7 @@ TEST(RandomSearch, ReachesTheExpectedAccuracyOnATwoDimensionalSphere) {
     // 4 / (pi N) = 1.3e-4 for N = 10000, and min > 2e-3 has probability exp(-15.7).
     const auto problem = builtin_problems().create("sphere:dim=2,bound=1");
     const auto optimizer = builtin_algorithms().create("random-search:batch=100");
-    const auto objective = run(*optimizer, *problem, evaluations(10000), 2024);
+    const auto objective = run_random_search(*optimizer, *problem, evaluations(10000), 2024);
     EXPECT_LT(objective->best_f(), 2e-3);
     EXPECT_GT(objective->best_f(), 0.0);
 }

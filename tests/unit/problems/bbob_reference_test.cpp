@@ -15,7 +15,7 @@ namespace mhb {
 namespace {
 
 // Checks every row of a reference file; returns the functions it covers.
-std::set<std::int64_t> expect_matches(const std::string& file, bool has_fopt) {
+std::set<std::int64_t> expect_bbob_matches(const std::string& file, bool has_fopt) {
     const CsvTable table = read_csv(std::string(MHB_TEST_DATA_DIR) + "/" + file);
     const std::size_t c_function = table.column("function");
     const std::size_t c_dimension = table.column("dimension");
@@ -52,7 +52,7 @@ std::set<std::int64_t> expect_matches(const std::string& file, bool has_fopt) {
 }
 
 TEST(BbobReference, EveryFunctionMatchesCocoValues) {
-    EXPECT_EQ(expect_matches("bbob_public_sample.csv", true).size(), 24u);
+    EXPECT_EQ(expect_bbob_matches("bbob_public_sample.csv", true).size(), 24u);
 }
 
 // tests/data/bbob_coco_regression_sample.csv: 71 entries of COCO's own regression-test data
@@ -64,7 +64,7 @@ TEST(BbobReference, EveryFunctionMatchesCocoValues) {
 // list 1-5, 51-60 and dimensions 2, 3, 5, 10, 20, 40; it was decoded into function, dimension and
 // instance when the extract was made.
 TEST(BbobReference, MatchesCocosRegressionDataAcrossDimensionsAndInstances) {
-    EXPECT_EQ(expect_matches("bbob_coco_regression_sample.csv", false).size(), 24u);
+    EXPECT_EQ(expect_bbob_matches("bbob_coco_regression_sample.csv", false).size(), 24u);
 }
 
 } // namespace

@@ -31,7 +31,7 @@ void expect_relative(double got, double expected, double tolerance, const std::s
 }
 
 // Checks every row of a reference file to 1e-10 relative; returns the (suite, f, dim) it covers.
-std::set<std::tuple<std::string, std::int64_t, std::int64_t>> expect_matches(const std::string& file) {
+std::set<std::tuple<std::string, std::int64_t, std::int64_t>> expect_cec_matches(const std::string& file) {
     const CsvTable table = read_csv(std::string(MHB_TEST_DATA_DIR) + "/cec/" + file);
     const std::size_t c_suite = table.column("suite");
     const std::size_t c_function = table.column("function");
@@ -61,7 +61,7 @@ std::set<std::tuple<std::string, std::int64_t, std::int64_t>> expect_matches(con
 }
 
 TEST(CecFunctions, PublicSampleMatchesTheOfficialCode) {
-    const auto covered = expect_matches("cec_public_sample.csv");
+    const auto covered = expect_cec_matches("cec_public_sample.csv");
     EXPECT_EQ(covered.size(), 4u); // 2017 F4 and F11, 2022 F1 and F9, D = 10
 }
 
@@ -71,7 +71,7 @@ void expect_full_reference(cec::Suite suite) {
     const std::string file = name + "_reference.csv";
     if (!std::filesystem::exists(std::string(MHB_TEST_DATA_DIR) + "/cec/" + file))
         GTEST_SKIP() << "tests/data/cec/" << file << " is not there yet";
-    const auto covered = expect_matches(file);
+    const auto covered = expect_cec_matches(file);
     const auto& recipes = cec::recipes(suite);
     for (std::size_t f = 0; f < recipes.size(); ++f)
         for (const int dim : recipes[f].dimensions)

@@ -15,7 +15,7 @@
 namespace mhb {
 namespace {
 
-std::unique_ptr<Problem> make(const std::string& spec) {
+std::unique_ptr<Problem> make_classic_function(const std::string& spec) {
     return builtin_problems().create(spec);
 }
 
@@ -28,7 +28,7 @@ Eigen::VectorXd vec(std::initializer_list<double> v) {
 }
 
 double at(const std::string& family, std::initializer_list<double> point, const std::string& extra = "") {
-    const auto p = make(family + ":dim=" + std::to_string(point.size()) + extra);
+    const auto p = make_classic_function(family + ":dim=" + std::to_string(point.size()) + extra);
     return p->evaluate(vec(point));
 }
 
@@ -52,7 +52,7 @@ TEST(ClassicFunctions, ValueAtTheOptimumIsZeroAndIsTheReportedOptimum) {
         for (const int dim : {2, 10, 30}) {
             const std::string spec =
                 name + ":dim=" + std::to_string(dim) + (name == "quartic" ? ",noise=0" : "");
-            const auto p = make(spec);
+            const auto p = make_classic_function(spec);
             const auto opt = p->known_optimum();
             ASSERT_TRUE(opt.has_value()) << spec;
             ASSERT_TRUE(opt->x.has_value()) << spec;
@@ -86,17 +86,17 @@ TEST(ClassicFunctions, UsualBoxesAndOptimaAsPublished) {
         {"penalized_2", {-50, 50, 1}}};
     ASSERT_EQ(expected.size(), classic_function_names().size());
     for (const auto& [name, box] : expected) {
-        const auto p = make(name + ":dim=5");
+        const auto p = make_classic_function(name + ":dim=5");
         EXPECT_EQ(p->dimension(), 5);
         EXPECT_TRUE((p->bounds().lower.array() == box[0]).all()) << name;
         EXPECT_TRUE((p->bounds().upper.array() == box[1]).all()) << name;
         EXPECT_TRUE((p->known_optimum()->x->array() == box[2]).all()) << name;
     }
     // `bound` makes the box [-bound, bound] (the sphere's parameter, kept for every family).
-    const auto wide = make("sphere:dim=3,bound=7");
+    const auto wide = make_classic_function("sphere:dim=3,bound=7");
     EXPECT_TRUE((wide->bounds().upper.array() == 7.0).all());
     EXPECT_TRUE((wide->bounds().lower.array() == -7.0).all());
-    const auto zak = make("zakharov:dim=2,bound=20");
+    const auto zak = make_classic_function("zakharov:dim=2,bound=20");
     EXPECT_EQ(zak->bounds().lower[0], -20.0);
 }
 
@@ -138,10 +138,10 @@ TEST(ClassicFunctions, KnownPointsFromAnIndependentImplementation) {
 }
 
 TEST(ClassicFunctions, QuarticNoiseIsUniformAndADeterministicFunctionOfInstanceAndPoint) {
-    const auto p = make("quartic:dim=3");
-    const auto same = make("quartic:dim=3");
-    const auto other = make("quartic:dim=3,instance=2");
-    const auto quiet = make("quartic:dim=3,noise=0");
+    const auto p = make_classic_function("quartic:dim=3");
+    const auto same = make_classic_function("quartic:dim=3");
+    const auto other = make_classic_function("quartic:dim=3,instance=2");
+    const auto quiet = make_classic_function("quartic:dim=3,noise=0");
     Eigen::VectorXd x = vec({0.1, -0.2, 0.3});
     EXPECT_EQ(p->evaluate(x), p->evaluate(x));
     EXPECT_EQ(p->evaluate(x), same->evaluate(x));
@@ -168,15 +168,16 @@ TEST(ClassicFunctions, QuarticNoiseIsUniformAndADeterministicFunctionOfInstanceA
 
 TEST(ClassicFunctions, BoundsThatExcludeTheOptimumAreRefused) {
     try {
-        (void)make("schwefel_2_26:dim=2,bound=100");
+        (void)make_classic_function("schwefel_2_26:dim=2,bound=100");
         FAIL() << "expected an error";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("schwefel_2_26: the box [-100, 100]^dim excludes the optimum"),
                   std::string::npos)
             << e.what();
     }
-    EXPECT_THROW((void)make("rosenbrock:dim=2,bound=0.5"), std::invalid_argument);
-    EXPECT_THROW((void)make("rosenbrock:dim=1"), std::invalid_argument); // needs two coordinates
+    EXPECT_THROW((void)make_classic_function("rosenbrock:dim=2,bound=0.5"), std::invalid_argument);
+    EXPECT_THROW((void)make_classic_function("rosenbrock:dim=1"),
+                 std::invalid_argument); // needs two coordinates
 }
 
 } // namespace

@@ -7,7 +7,7 @@
 namespace mhb {
 namespace {
 
-std::string error_of(const std::string& spec) {
+std::string spec_error_of(const std::string& spec) {
     try {
         (void)builtin_problems().create(spec);
     } catch (const std::invalid_argument& e) {
@@ -17,7 +17,7 @@ std::string error_of(const std::string& spec) {
 }
 
 void expect_error(const std::string& spec, const std::string& fragment) {
-    const std::string message = error_of(spec);
+    const std::string message = spec_error_of(spec);
     EXPECT_NE(message.find(fragment), std::string::npos) << spec << " gave: " << message;
 }
 
@@ -46,7 +46,7 @@ TEST(FunctionErrors, BadClassicParametersNameTheParameterAndItsRange) {
 }
 
 TEST(FunctionErrors, UnknownFamiliesListTheKnownOnes) {
-    const std::string message = error_of("rastrigen:dim=3");
+    const std::string message = spec_error_of("rastrigen:dim=3");
     EXPECT_NE(message.find("unknown problem 'rastrigen'; known: "), std::string::npos) << message;
     for (const char* name : {"sphere", "rastrigin", "schwefel_2_26", "penalized_2", "bbob"})
         EXPECT_NE(message.find(name), std::string::npos) << name;

@@ -14,7 +14,7 @@
 namespace mhb {
 namespace {
 
-std::unique_ptr<Problem> make(const std::string& spec) {
+std::unique_ptr<Problem> make_function_instance(const std::string& spec) {
     return builtin_problems().create(spec);
 }
 
@@ -30,8 +30,8 @@ TEST(ClassicInstances, ShiftMovesTheOptimumIntoTheCentralEightyPercentAsTheInsta
         const std::string noise = name == "quartic" ? ",noise=0" : "";
         for (const int instance : {1, 2, 7}) {
             const std::string spec = name + ":dim=10,shift=1,instance=" + std::to_string(instance) + noise;
-            const auto p = make(spec);
-            const auto plain = make(name + ":dim=10" + noise);
+            const auto p = make_function_instance(spec);
+            const auto plain = make_function_instance(name + ":dim=10" + noise);
             const Eigen::VectorXd c = *p->known_optimum()->x;
             EXPECT_EQ(c, draw_shift(name, instance, p->bounds())) << spec;
             EXPECT_NE(c, *plain->known_optimum()->x) << spec;
@@ -78,8 +78,8 @@ TEST(ClassicInstances, RotatedVariantIsTheFunctionOfTheRotatedShiftedPoint) {
     for (const auto& name : classic_function_names()) {
         const std::string noise = name == "quartic" ? ",noise=0" : "";
         const std::string spec = name + ":dim=6,shift=1,rotate=1,instance=3" + noise;
-        const auto p = make(spec);
-        const auto plain = make(name + ":dim=6" + noise);
+        const auto p = make_function_instance(spec);
+        const auto plain = make_function_instance(name + ":dim=6" + noise);
         const Eigen::VectorXd c = *p->known_optimum()->x;
         const Eigen::MatrixXd q = draw_rotation(name, 3, 6);
         const Eigen::VectorXd own = *plain->known_optimum()->x;
@@ -92,14 +92,14 @@ TEST(ClassicInstances, RotatedVariantIsTheFunctionOfTheRotatedShiftedPoint) {
             EXPECT_NEAR(p->evaluate(x), expected, 1e-12 * std::max(1.0, std::fabs(expected))) << spec;
         }
         // Rotation alone turns about the unshifted optimum.
-        const auto turned = make(name + ":dim=6,rotate=1,instance=3" + noise);
+        const auto turned = make_function_instance(name + ":dim=6,rotate=1,instance=3" + noise);
         EXPECT_EQ(*turned->known_optimum()->x, own) << name;
         EXPECT_EQ(turned->evaluate(own), plain->known_optimum()->f) << name;
     }
     // Rotation makes a separable function non-separable: moving one coordinate of a rotated
     // Rastrigin changes the value differently from the unrotated one.
-    const auto flat = make("rastrigin:dim=4,shift=1,instance=2");
-    const auto turned = make("rastrigin:dim=4,shift=1,rotate=1,instance=2");
+    const auto flat = make_function_instance("rastrigin:dim=4,shift=1,instance=2");
+    const auto turned = make_function_instance("rastrigin:dim=4,shift=1,rotate=1,instance=2");
     Eigen::VectorXd x = *turned->known_optimum()->x;
     x[0] += 0.3;
     EXPECT_GT(std::fabs(flat->evaluate(x) - turned->evaluate(x)), 1e-3);
@@ -114,7 +114,7 @@ TEST(ClassicInstances, NoRandomPointBeatsTheOptimumOfAnyVariant) {
             for (const int instance : {1, 4}) {
                 const std::string spec =
                     name + ":dim=5" + variant + ",instance=" + std::to_string(instance) + noise;
-                const auto p = make(spec);
+                const auto p = make_function_instance(spec);
                 const double f_star = p->known_optimum()->f;
                 Rng rng(static_cast<std::uint64_t>(instance) * 101);
                 for (int k = 0; k < 2000; ++k)
@@ -126,7 +126,7 @@ TEST(ClassicInstances, NoRandomPointBeatsTheOptimumOfAnyVariant) {
 
 TEST(ClassicInstances, SameInstanceEverywhereAcrossRunsAndThreads) {
     const std::string spec = "rastrigin:dim=30,shift=1,rotate=1,instance=3";
-    const auto reference = make(spec);
+    const auto reference = make_function_instance(spec);
     Rng rng(3);
     std::vector<Eigen::VectorXd> points;
     for (int k = 0; k < 20; ++k)
@@ -140,7 +140,7 @@ TEST(ClassicInstances, SameInstanceEverywhereAcrossRunsAndThreads) {
     std::vector<std::thread> threads;
     for (std::size_t t = 0; t < 4; ++t)
         threads.emplace_back([&, t] {
-            const auto p = make(spec);
+            const auto p = make_function_instance(spec);
             for (const auto& x : points) {
                 own[t].push_back(p->evaluate(x));
                 shared[t].push_back(reference->evaluate(x));
@@ -165,7 +165,7 @@ TEST(ClassicInstances, InstancesArePinnedAcrossProcessesAndBuilds) {
     EXPECT_DOUBLE_EQ(c[0], 2.9047161976328653);
     EXPECT_DOUBLE_EQ(c[1], 3.0242979609113765);
     EXPECT_DOUBLE_EQ(c[2], 2.8287659664866398);
-    const auto p = make("rastrigin:dim=3,shift=1,rotate=1,instance=3");
+    const auto p = make_function_instance("rastrigin:dim=3,shift=1,rotate=1,instance=3");
     EXPECT_NEAR(p->evaluate(Eigen::VectorXd::Zero(3)), 48.596103399780269, 1e-12 * 48.6);
 }
 

@@ -18,7 +18,7 @@ const std::string good = "# Rs=0.33\n"
                          "0.0002,-15.1,40.0,-2,8.6,523.6\n"
                          "0.0003,-15.1,40.0,-2,8.6,523.6\n";
 
-std::string error_of(const std::string& text) {
+std::string csv_error_of(const std::string& text) {
     std::istringstream in(text);
     try {
         (void)read_dataset_csv(in, "drive.csv");
@@ -60,39 +60,39 @@ TEST(PmsmDatasetCsv, ColumnsInAnyOrderWithInjectedColumn) {
 }
 
 TEST(PmsmDatasetCsv, ErrorsNameFileLineAndColumn) {
-    EXPECT_EQ(error_of(replace_line(good, 4, "0.0001,-14.5,abc,0,8.6,523.6")),
+    EXPECT_EQ(csv_error_of(replace_line(good, 4, "0.0001,-14.5,abc,0,8.6,523.6")),
               "drive.csv: line 4, column 'uq': 'abc' is not a number");
-    EXPECT_EQ(error_of(replace_line(good, 5, "0.0002,nan,40.0,-2,8.6,523.6")),
+    EXPECT_EQ(csv_error_of(replace_line(good, 5, "0.0002,nan,40.0,-2,8.6,523.6")),
               "drive.csv: line 5, column 'ud': 'nan' is not finite (NaN or infinity)");
-    EXPECT_EQ(error_of(replace_line(good, 6, "0.0003,-15.1,40.0,-2,8.6,inf")),
+    EXPECT_EQ(csv_error_of(replace_line(good, 6, "0.0003,-15.1,40.0,-2,8.6,inf")),
               "drive.csv: line 6, column 'omega': 'inf' is not finite (NaN or infinity)");
-    EXPECT_EQ(error_of(replace_line(good, 3, "0,-14.5,43.4,0,8.6")),
+    EXPECT_EQ(csv_error_of(replace_line(good, 3, "0,-14.5,43.4,0,8.6")),
               "drive.csv: line 3, row has 5 fields but the header has 6 columns");
-    EXPECT_EQ(error_of(replace_line(good, 3, "0,-14.5,,0,8.6,523.6")),
+    EXPECT_EQ(csv_error_of(replace_line(good, 3, "0,-14.5,,0,8.6,523.6")),
               "drive.csv: line 3, column 'uq': the field is empty");
-    EXPECT_EQ(error_of(replace_line(good, 2, "t,ud,uq,id,iq")),
+    EXPECT_EQ(csv_error_of(replace_line(good, 2, "t,ud,uq,id,iq")),
               "drive.csv: line 2, column 'omega' is missing from the header (expected "
               "t,ud,uq,id,iq,omega[,injected])");
     EXPECT_EQ(
-        error_of(replace_line(good, 2, "t,ud,uq,id,iq,omega,speed")),
+        csv_error_of(replace_line(good, 2, "t,ud,uq,id,iq,omega,speed")),
         "drive.csv: line 2, column 7: unknown column 'speed' (expected t,ud,uq,id,iq,omega[,injected])");
-    EXPECT_EQ(error_of(replace_line(good, 2, "t,ud,uq,id,iq,omega,ud")),
+    EXPECT_EQ(csv_error_of(replace_line(good, 2, "t,ud,uq,id,iq,omega,ud")),
               "drive.csv: line 2, column 7: column 'ud' appears twice");
-    EXPECT_EQ(error_of("t,ud,uq,id,iq,omega,injected\n0,1,2,0,8,500,0\n0,1,2,0,8,500,2\n"),
+    EXPECT_EQ(csv_error_of("t,ud,uq,id,iq,omega,injected\n0,1,2,0,8,500,0\n0,1,2,0,8,500,2\n"),
               "drive.csv: line 3, column 'injected': '2' is not 0 or 1");
-    EXPECT_EQ(error_of("t,ud,uq,id,iq,omega\n0,1,2,0,8,500\n0,1,2,-2,8,500\n"),
+    EXPECT_EQ(csv_error_of("t,ud,uq,id,iq,omega\n0,1,2,0,8,500\n0,1,2,-2,8,500\n"),
               "drive.csv: line 3, too few rows: 2 data rows, at least 4 needed");
     // No injected samples: every |id| is below the 1 A threshold.
-    EXPECT_EQ(error_of(replace_line(replace_line(good, 5, "0.0002,-15.1,40.0,-0.5,8.6,523.6"), 6,
-                                    "0.0003,-15.1,40.0,-0.5,8.6,523.6")),
+    EXPECT_EQ(csv_error_of(replace_line(replace_line(good, 5, "0.0002,-15.1,40.0,-0.5,8.6,523.6"), 6,
+                                        "0.0003,-15.1,40.0,-0.5,8.6,523.6")),
               "drive.csv: line 6, column 'id': no samples in the injected state (by |id| > 1 A)");
     EXPECT_EQ(
-        error_of("t,ud,uq,id,iq,omega,injected\n0,1,2,0,8,500,1\n0,1,2,0,8,500,1\n0,1,2,0,8,500,1\n"
-                 "0,1,2,0,8,500,1\n"),
+        csv_error_of("t,ud,uq,id,iq,omega,injected\n0,1,2,0,8,500,1\n0,1,2,0,8,500,1\n0,1,2,0,8,500,1\n"
+                     "0,1,2,0,8,500,1\n"),
         "drive.csv: line 5, column 'injected': no samples in the id = 0 state (by its 'injected' column)");
-    EXPECT_EQ(error_of("# only=metadata\n"),
+    EXPECT_EQ(csv_error_of("# only=metadata\n"),
               "drive.csv: no header line (expected t,ud,uq,id,iq,omega[,injected])");
-    EXPECT_EQ(error_of("# Rs=1\n# Rs=2\n" + good.substr(good.find('\n') + 1)),
+    EXPECT_EQ(csv_error_of("# Rs=1\n# Rs=2\n" + good.substr(good.find('\n') + 1)),
               "drive.csv: line 2, metadata key 'Rs' is given twice");
 }
 

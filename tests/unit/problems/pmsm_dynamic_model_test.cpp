@@ -15,17 +15,18 @@
 #include "problems/pmsm/dynamic_model.hpp"
 #include "problems/pmsm/linear_model.hpp"
 #include "problems/pmsm/segments.hpp"
+#include "support/data.hpp"
 
 namespace mhb::pmsm {
 namespace {
 
-const std::string data_dir = std::string(MHB_TEST_DATA_DIR) + "/pmsm/";
+using mhb::test_support::pmsm_data_dir;
 constexpr double Ts = 1e-4;
 
 // The shared files have no `injected` column: the reader tells the states by |id| > 1 A, and every
 // one of them has samples on both sides (the dynamic model itself ignores the state).
 Dataset read(const std::string& file) {
-    return read_dataset_csv(data_dir + file, DatasetReadOptions{});
+    return read_dataset_csv(pmsm_data_dir + file, DatasetReadOptions{});
 }
 
 struct ExpectedRow {
@@ -35,7 +36,7 @@ struct ExpectedRow {
 };
 
 std::vector<ExpectedRow> read_expected_dynamic() {
-    std::ifstream in(data_dir + "expected_dynamic.csv");
+    std::ifstream in(pmsm_data_dir + "expected_dynamic.csv");
     std::string line;
     std::getline(in, line);
     EXPECT_EQ(line, "file,Rs_ls,Ld_ls,Lq_ls,psi_ls,f_ls,Rs_true,Ld_true,Lq_true,psi_true");

@@ -8,11 +8,12 @@
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/steady_state_problem.hpp"
 #include "problems/problem_registry.hpp"
+#include "support/data.hpp"
 
 namespace mhb::pmsm {
 namespace {
 
-const std::string data_dir = std::string(MHB_TEST_DATA_DIR) + "/pmsm/";
+using mhb::test_support::pmsm_data_dir;
 
 long double reference_fitness(const SteadyStateData& s, const Eigen::VectorXd& x) {
     long double f = 0;
@@ -32,7 +33,7 @@ double relative_gap(double value, long double reference) {
 // Anywhere in the box and near the optimum of the noisy file (f from 45 to ~1e6): both forms
 // within 1e-12 relative of the long-double sum (measured: a few 1e-15).
 TEST(PmsmExpandedFitness, MatchesTheSumOverSamplesOnNoisyData) {
-    const Dataset d = read_dataset_csv(data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
+    const Dataset d = read_dataset_csv(pmsm_data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
     const SteadyStateProblem expanded(d, {}, paper_bounds());
     const SteadyStateProblem direct(d, {}, paper_bounds(), FitnessEvaluation::direct);
     const SteadyStateData& s = expanded.samples();
@@ -55,7 +56,7 @@ TEST(PmsmExpandedFitness, MatchesTheSumOverSamplesOnNoisyData) {
 // either form can have (expected.csv's README says the same). Asserted: 1e-7, and the expanded
 // form no worse than 10x the direct one.
 TEST(PmsmExpandedFitness, MatchesTheSumOverSamplesNearACleanOptimum) {
-    const Dataset d = read_dataset_csv(data_dir + "pmsm_public_2200rpm_2.5Nm_clean_ss.csv");
+    const Dataset d = read_dataset_csv(pmsm_data_dir + "pmsm_public_2200rpm_2.5Nm_clean_ss.csv");
     const SteadyStateProblem expanded(d, {}, paper_bounds());
     const SteadyStateProblem direct(d, {}, paper_bounds(), FitnessEvaluation::direct);
     const Eigen::Vector4d opt = expanded.least_squares().theta;

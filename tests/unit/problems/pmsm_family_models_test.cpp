@@ -11,16 +11,15 @@
 #include "problems/pmsm/steady_state_data.hpp"
 #include "problems/pmsm/steady_state_problem.hpp"
 #include "problems/problem_registry.hpp"
+#include "support/numbers.hpp"
 
 namespace mhb {
 namespace {
 
-std::unique_ptr<Problem> make(const std::string& spec) {
-    return builtin_problems().create(Spec::parse(spec));
-}
+using mhb::test_support::max_relative_error;
 
-double max_relative_error(const Eigen::VectorXd& x, const Eigen::VectorXd& truth) {
-    return ((x - truth).array() / truth.array()).abs().maxCoeff();
+std::unique_ptr<Problem> make_pmsm_model(const std::string& spec) {
+    return builtin_problems().create(Spec::parse(spec));
 }
 
 // An interior-PM motor (Ld 6 mH != Lq 14 mH) simulated without noise is recovered by each model:
@@ -32,7 +31,7 @@ TEST(PmsmModels, AnInteriorPmMotorIsRecoveredByEveryModel) {
     // the simulator's 10 with the speed known only at samples).
     const std::pair<const char*, double> cases[] = {{"steady", 1e-5}, {"dynamic", 5e-4}, {"output", 2e-5}};
     for (const auto& [model, tolerance] : cases) {
-        const auto problem = make(std::string("pmsm:motor=ipm,speed=1800,load=4,model=") + model);
+        const auto problem = make_pmsm_model(std::string("pmsm:motor=ipm,speed=1800,load=4,model=") + model);
         ASSERT_EQ(problem->dimension(), 4) << model;
         const auto optimum = problem->known_optimum();
         ASSERT_TRUE(optimum && optimum->x) << model;
@@ -47,8 +46,8 @@ TEST(PmsmModels, AnInteriorPmMotorIsRecoveredByEveryModel) {
 }
 
 TEST(PmsmModels, ThePaperMotorKeepsThePaperBoxAndTheSpecOverridesIt) {
-    EXPECT_EQ(make("pmsm")->bounds().upper, pmsm::paper_bounds().upper);
-    const auto dynamic = make("pmsm:model=dynamic,ld=0.001:0.02");
+    EXPECT_EQ(make_pmsm_model("pmsm")->bounds().upper, pmsm::paper_bounds().upper);
+    const auto dynamic = make_pmsm_model("pmsm:model=dynamic,ld=0.001:0.02");
     EXPECT_EQ(dynamic->bounds().lower[1], 0.001);
     EXPECT_EQ(dynamic->bounds().upper[1], 0.02);
     EXPECT_EQ(dynamic->bounds().upper[0], 0.5);
@@ -57,18 +56,18 @@ TEST(PmsmModels, ThePaperMotorKeepsThePaperBoxAndTheSpecOverridesIt) {
 // A box that excludes the motor's Rs: f* is the box-constrained optimum, and the problem says so.
 TEST(PmsmModels, ABoxThatCutsTheOptimumIsWarnedAbout) {
     for (const char* model : {"steady", "dynamic", "output"}) {
-        const auto problem = make(std::string("pmsm:rs=0:0.2,model=") + model);
+        const auto problem = make_pmsm_model(std::string("pmsm:rs=0:0.2,model=") + model);
         const auto warnings = problem->warnings();
         ASSERT_EQ(warnings.size(), 1u) << model;
         EXPECT_NE(warnings[0].find("Rs"), std::string::npos) << warnings[0];
         EXPECT_NE(warnings[0].find("rs="), std::string::npos) << warnings[0];
         EXPECT_NEAR(problem->known_optimum()->x->coeff(0), 0.2, 1e-12) << model;
-        EXPECT_TRUE(make(std::string("pmsm:model=") + model)->warnings().empty()) << model;
+        EXPECT_TRUE(make_pmsm_model(std::string("pmsm:model=") + model)->warnings().empty()) << model;
     }
 }
 
 TEST(PmsmModels, TheDeadTimeVoltageIsAFifthParameter) {
-    const auto problem = make("pmsm:model=dynamic,fit_vdt=on,deadtime=5e-7");
+    const auto problem = make_pmsm_model("pmsm:model=dynamic,fit_vdt=on,deadtime=5e-7");
     ASSERT_EQ(problem->dimension(), 5);
     EXPECT_EQ(problem->parameter_names().back(), "Vdt");
     EXPECT_EQ(problem->bounds().upper[4], 20.0);
@@ -79,8 +78,8 @@ TEST(PmsmModels, TheDeadTimeVoltageIsAFifthParameter) {
 // conditions=paper simulates the paper's three conditions and fits them jointly: eq. 11 of the
 // three is the sum of eq. 11 of each.
 TEST(PmsmModels, SeveralConditionsAreFittedJointly) {
-    const auto joint = make("pmsm:conditions=paper");
-    const auto a = make("pmsm:speed=2500,load=2");
+    const auto joint = make_pmsm_model("pmsm:conditions=paper");
+    const auto a = make_pmsm_model("pmsm:speed=2500,load=2");
     const auto* steady = dynamic_cast<const pmsm::SteadyStateProblem*>(joint.get());
     ASSERT_NE(steady, nullptr);
     EXPECT_EQ(steady->samples().pairs, 900);
@@ -97,14 +96,14 @@ TEST(PmsmModels, SeveralFilesAreFittedJointlyAndEachIsNamedByItsContent) {
     pmsm::write_dataset_csv(a, pmsm::simulate_dataset(config));
     config.condition = {2000, 2};
     pmsm::write_dataset_csv(b, pmsm::simulate_dataset(config));
-    const auto joint = make("pmsm:fitness=direct,data=" + a + "+" + b);
-    const auto pa = make("pmsm:fitness=direct,data=" + a);
-    const auto pb = make("pmsm:fitness=direct,data=" + b);
+    const auto joint = make_pmsm_model("pmsm:fitness=direct,data=" + a + "+" + b);
+    const auto pa = make_pmsm_model("pmsm:fitness=direct,data=" + a);
+    const auto pb = make_pmsm_model("pmsm:fitness=direct,data=" + b);
     ASSERT_EQ(joint->data_files().size(), 2u);
     EXPECT_EQ(joint->data_files()[1].sha256, pb->data_files()[0].sha256);
     const Eigen::VectorXd x = Eigen::Vector4d(0.3, 0.003, 0.0035, 0.07);
     EXPECT_NEAR(joint->evaluate(x), pa->evaluate(x) + pb->evaluate(x), 1e-12 * joint->evaluate(x));
-    EXPECT_THROW(make("pmsm:data=" + a + "+" + a), std::invalid_argument);
+    EXPECT_THROW(make_pmsm_model("pmsm:data=" + a + "+" + a), std::invalid_argument);
 }
 
 // The settle rule: after a switch seen between consecutive rows, 10 ms of the new state are left
@@ -131,7 +130,7 @@ TEST(PmsmModels, ClashingParametersAreRefused) {
                              "pmsm:model=dynamic,w1=1",          "pmsm:model=steady,smooth=2",
                              "pmsm:conditions=2500@x",           "pmsm:model=output,settle=0.1"};
     for (const char* spec : refused)
-        EXPECT_THROW(make(spec), std::invalid_argument) << spec;
+        EXPECT_THROW(make_pmsm_model(spec), std::invalid_argument) << spec;
 }
 
 } // namespace

@@ -14,11 +14,12 @@
 #include "problems/pmsm/least_squares.hpp"
 #include "problems/pmsm/steady_state_problem.hpp"
 #include "problems/problem_registry.hpp"
+#include "support/data.hpp"
 
 namespace mhb::pmsm {
 namespace {
 
-const std::string data_dir = std::string(MHB_TEST_DATA_DIR) + "/pmsm/";
+using mhb::test_support::pmsm_data_dir;
 
 // Noise-free samples of eq. 2 at two operating states, with a little scatter in the currents and
 // speed so every sample differs; an interior-permanent-magnet motor (Ld != Lq) so that a swap
@@ -95,7 +96,7 @@ struct Expected {
 };
 
 Expected read_expected(const std::string& file) {
-    std::ifstream in(data_dir + "expected.csv");
+    std::ifstream in(pmsm_data_dir + "expected.csv");
     std::string line;
     std::getline(in, line); // header
     while (std::getline(in, line)) {
@@ -126,7 +127,7 @@ Expected read_expected(const std::string& file) {
 TEST(PmsmLeastSquares, ReproducesExpectedCsvOnTheNoisyFile) {
     const std::string file = "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv";
     const Expected e = read_expected(file);
-    const Dataset d = read_dataset_csv(data_dir + file);
+    const Dataset d = read_dataset_csv(pmsm_data_dir + file);
     ASSERT_EQ(d.size(), 300u);
     EXPECT_EQ(d.state_counts(), (std::pair<std::size_t, std::size_t>(150, 150)));
     const SteadyStateData s = pair_samples(d);
@@ -150,7 +151,7 @@ TEST(PmsmLeastSquares, ReproducesExpectedCsvOnTheNoisyFile) {
 TEST(PmsmLeastSquares, ReproducesExpectedCsvOnTheCleanFile) {
     const std::string file = "pmsm_public_2200rpm_2.5Nm_clean_ss.csv";
     const Expected e = read_expected(file);
-    const SteadyStateData s = pair_samples(read_dataset_csv(data_dir + file));
+    const SteadyStateData s = pair_samples(read_dataset_csv(pmsm_data_dir + file));
     const LeastSquaresResult r = solve_least_squares(s);
     for (int j = 0; j < 4; ++j)
         EXPECT_NEAR(r.theta[j] / e.theta_ls[j], 1.0, 1e-9) << "parameter " << j;
@@ -163,7 +164,7 @@ TEST(PmsmLeastSquares, ReproducesExpectedCsvForTheInteriorPmMotor) {
     for (const std::string file :
          {"pmsm_public_ipm_1800rpm_4Nm_clean_ss.csv", "pmsm_public_ipm_1800rpm_4Nm_noisy_ss.csv"}) {
         const Expected e = read_expected(file);
-        const auto problem = builtin_problems().create("pmsm:data=" + data_dir + file);
+        const auto problem = builtin_problems().create("pmsm:data=" + pmsm_data_dir + file);
         const auto optimum = problem->known_optimum();
         ASSERT_TRUE(optimum && optimum->x);
         for (int j = 0; j < 4; ++j)
@@ -180,7 +181,7 @@ TEST(PmsmLeastSquares, ReproducesExpectedCsvForTheInteriorPmMotor) {
 // solver or the fitness has a sign wrong).
 TEST(PmsmLeastSquares, OptimumIsAMinimumOfTheFitness) {
     const SteadyStateData s =
-        pair_samples(read_dataset_csv(data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv"));
+        pair_samples(read_dataset_csv(pmsm_data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv"));
     const LeastSquaresResult r = solve_least_squares(s);
     for (int j = 0; j < 4; ++j)
         for (const double step : {-1e-3, 1e-3}) {
@@ -193,7 +194,7 @@ TEST(PmsmLeastSquares, OptimumIsAMinimumOfTheFitness) {
 // When theta* is outside the box, known_optimum() is the box-constrained optimum: the best
 // value on the box, which no feasible point beats (checked on a grid of feasible points).
 TEST(PmsmLeastSquares, BoxConstrainedOptimumWhenOutside) {
-    const Dataset d = read_dataset_csv(data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
+    const Dataset d = read_dataset_csv(pmsm_data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
     Box box = paper_bounds();
     box.upper[0] = 0.3; // Rs* = 0.359 lies above it
     const SteadyStateProblem problem(d, FitnessWeights{}, box);

@@ -14,11 +14,12 @@
 #include "problems/pmsm/dynamic_model.hpp"
 #include "problems/pmsm/linear_model.hpp"
 #include "problems/pmsm/linear_model_problem.hpp"
+#include "support/data.hpp"
 
 namespace mhb::pmsm {
 namespace {
 
-const std::string data_dir = std::string(MHB_TEST_DATA_DIR) + "/pmsm/";
+using mhb::test_support::pmsm_data_dir;
 
 // m x k Gaussian columns with very different scales (as ohm and henry columns differ), so that
 // a solver which does not scale its columns would show it.
@@ -278,7 +279,7 @@ TEST(PmsmLinearModel, RefusesMalformedModels) {
 
 LinearModel ipm_model(bool fit_dead_time) {
     const std::string file = "pmsm_public_ipm_1800rpm_4Nm_noisy_tr.csv";
-    return dynamic_model({read_dataset_csv(data_dir + file)}, {file}, {fit_dead_time, 0});
+    return dynamic_model({read_dataset_csv(pmsm_data_dir + file)}, {file}, {fit_dead_time, 0});
 }
 
 Box ipm_box(bool fit_dead_time) {

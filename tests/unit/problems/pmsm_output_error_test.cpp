@@ -17,11 +17,15 @@
 #include "problems/pmsm/output_error.hpp"
 #include "problems/pmsm/output_error_problem.hpp"
 #include "results/store/csv.hpp"
+#include "support/data.hpp"
+#include "support/numbers.hpp"
 
 namespace mhb::pmsm {
 namespace {
 
-const std::string data_dir = std::string(MHB_TEST_DATA_DIR) + "/pmsm/";
+using mhb::test_support::max_abs_difference;
+using mhb::test_support::max_relative_error;
+using mhb::test_support::pmsm_data_dir;
 
 Dataset rows_of(const Dataset& d, std::size_t begin, std::size_t end) {
     Dataset out;
@@ -53,17 +57,6 @@ OutputErrorModel model_of(const Dataset& data, int substeps = 2, bool dead_time 
 // The paper's box widened to hold the IPM motor.
 Box wide_box() {
     return Box{Eigen::Vector4d(0.0, 0.0, 0.0, 0.0), Eigen::Vector4d(2.0, 0.03, 0.03, 0.3)};
-}
-
-double max_relative_error(const Eigen::VectorXd& x, const Eigen::VectorXd& truth) {
-    return ((x - truth).array() / truth.array()).abs().maxCoeff();
-}
-
-double max_abs_difference(const std::vector<double>& a, const std::vector<double>& b) {
-    double m = 0;
-    for (std::size_t k = 0; k < a.size(); ++k)
-        m = std::max(m, std::fabs(a[k] - b[k]));
-    return m;
 }
 
 TEST(PmsmOutputError, TheIpmConfigurationIsValid) {
@@ -343,7 +336,7 @@ TEST(PmsmOutputError, SharedCleanTransientFiles) {
     };
     for (const Case& c : {Case{"pmsm_public_2200rpm_2.5Nm_clean_tr.csv", 2e-8},
                           Case{"pmsm_public_ipm_1800rpm_4Nm_clean_tr.csv", 1e-6}}) {
-        const Dataset d = read_dataset_csv(data_dir + c.file);
+        const Dataset d = read_dataset_csv(pmsm_data_dir + c.file);
         const Eigen::VectorXd truth = *d.true_parameters();
         const OutputErrorModel model({d}, {c.file}, {});
         EXPECT_LT(model.fitness(truth), c.f_truth_bound) << c.file;
@@ -360,7 +353,7 @@ struct ExpectedOutputRow {
 };
 
 std::vector<ExpectedOutputRow> read_expected_output() {
-    const CsvTable table = read_csv(data_dir + "expected_output.csv");
+    const CsvTable table = read_csv(pmsm_data_dir + "expected_output.csv");
     std::vector<ExpectedOutputRow> out;
     for (std::size_t i = 0; i < table.rows.size(); ++i) {
         ExpectedOutputRow e;
@@ -377,7 +370,7 @@ std::vector<ExpectedOutputRow> read_expected_output() {
 
 // The `_ls` values of expected_dynamic.csv: the starts the `pmsm` family itself refines from.
 Eigen::Vector4d dynamic_estimate(const std::string& file) {
-    const CsvTable table = read_csv(data_dir + "expected_dynamic.csv");
+    const CsvTable table = read_csv(pmsm_data_dir + "expected_dynamic.csv");
     for (std::size_t i = 0; i < table.rows.size(); ++i)
         if (table.rows[i][table.column("file")] == file)
             return {table.number(i, table.column("Rs_ls")), table.number(i, table.column("Ld_ls")),
@@ -392,7 +385,7 @@ TEST(PmsmOutputErrorProblem, KnownOptimumMatchesTheMultiStartReference) {
     const std::vector<ExpectedOutputRow> expected = read_expected_output();
     ASSERT_EQ(expected.size(), 4u);
     for (const ExpectedOutputRow& e : expected) {
-        const Dataset d = read_dataset_csv(data_dir + e.file);
+        const Dataset d = read_dataset_csv(pmsm_data_dir + e.file);
         const Eigen::VectorXd truth = *d.true_parameters();
         const OutputErrorProblem problem(OutputErrorModel({d}, {e.file}, {false, e.substeps}), wide_box(),
                                          truth, {truth, dynamic_estimate(e.file)});
@@ -412,7 +405,7 @@ TEST(PmsmOutputError, DISABLED_PrintExpectedOutput) {
     for (const char* file :
          {"pmsm_public_2200rpm_2.5Nm_clean_tr.csv", "pmsm_public_2200rpm_2.5Nm_noisy_tr.csv",
           "pmsm_public_ipm_1800rpm_4Nm_clean_tr.csv", "pmsm_public_ipm_1800rpm_4Nm_noisy_tr.csv"}) {
-        const Dataset d = read_dataset_csv(data_dir + file);
+        const Dataset d = read_dataset_csv(pmsm_data_dir + file);
         const OutputErrorModel model({d}, {file}, {false, 2});
         const Box box = wide_box();
         std::vector<Eigen::VectorXd> starts{*d.true_parameters()};

@@ -5,13 +5,14 @@
 
 #include "problems/pmsm/steady_state_problem.hpp"
 #include "problems/problem_registry.hpp"
+#include "support/data.hpp"
 
 namespace mhb {
 namespace {
 
-const std::string data_dir = std::string(MHB_TEST_DATA_DIR) + "/pmsm/";
+using mhb::test_support::pmsm_data_dir;
 
-std::string error_of(const std::string& spec) {
+std::string pmsm_spec_error_of(const std::string& spec) {
     try {
         (void)builtin_problems().create(spec);
     } catch (const std::invalid_argument& e) {
@@ -52,7 +53,7 @@ TEST(PmsmProblem, IdenticalSpecGivesIdenticalDataBitForBit) {
 
 TEST(PmsmProblem, ReadsAUsersDataset) {
     const auto problem =
-        builtin_problems().create("pmsm:data=" + data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
+        builtin_problems().create("pmsm:data=" + pmsm_data_dir + "pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
     // expected.csv: f_ls = 45.077285948014918 for this file.
     EXPECT_NEAR(problem->known_optimum()->f, 45.077285948014918, 1e-7);
     EXPECT_EQ(dynamic_cast<const pmsm::SteadyStateProblem&>(*problem).samples().pairs, 150);
@@ -65,20 +66,20 @@ TEST(PmsmProblem, BoundsAreOverridableAndCheckedWithClearErrors) {
     EXPECT_EQ(problem->bounds().lower[3], 0.05);
     EXPECT_EQ(problem->bounds().upper[3], 0.2);
     EXPECT_EQ(problem->bounds().upper[1], 0.01);
-    EXPECT_EQ(error_of("pmsm:rs=0.5:0.1"), "pmsm: parameter 'rs' = 0.5:0.1 needs lo < hi");
-    EXPECT_EQ(error_of("pmsm:ld=0.001"),
+    EXPECT_EQ(pmsm_spec_error_of("pmsm:rs=0.5:0.1"), "pmsm: parameter 'rs' = 0.5:0.1 needs lo < hi");
+    EXPECT_EQ(pmsm_spec_error_of("pmsm:ld=0.001"),
               "pmsm: parameter 'ld' = 0.001 is not of the form lo:hi (two finite numbers, e.g. 0:0.5)");
-    EXPECT_EQ(error_of("pmsm:lq=a:b"),
+    EXPECT_EQ(pmsm_spec_error_of("pmsm:lq=a:b"),
               "pmsm: parameter 'lq' = a:b is not of the form lo:hi (two finite numbers, e.g. 0:0.5)");
-    EXPECT_EQ(error_of("pmsm:psi=0:inf"),
+    EXPECT_EQ(pmsm_spec_error_of("pmsm:psi=0:inf"),
               "pmsm: parameter 'psi' = 0:inf is not of the form lo:hi (two finite numbers, e.g. 0:0.5)");
-    EXPECT_EQ(error_of("pmsm:rs=0.2:0.2"), "pmsm: parameter 'rs' = 0.2:0.2 needs lo < hi");
+    EXPECT_EQ(pmsm_spec_error_of("pmsm:rs=0.2:0.2"), "pmsm: parameter 'rs' = 0.2:0.2 needs lo < hi");
 }
 
 TEST(PmsmProblem, RejectsBadParameters) {
-    EXPECT_EQ(error_of("pmsm:n=501"), "pmsm: parameter 'n' = 501 is outside [2, 500]");
-    EXPECT_EQ(error_of("pmsm:noise_i=-1"), "pmsm: parameter 'noise_i' = -1 is outside [0, 10]");
-    EXPECT_EQ(error_of("pmsm:data=x.csv,speed=2000,seed=3"),
+    EXPECT_EQ(pmsm_spec_error_of("pmsm:n=501"), "pmsm: parameter 'n' = 501 is outside [2, 500]");
+    EXPECT_EQ(pmsm_spec_error_of("pmsm:noise_i=-1"), "pmsm: parameter 'noise_i' = -1 is outside [0, 10]");
+    EXPECT_EQ(pmsm_spec_error_of("pmsm:data=x.csv,speed=2000,seed=3"),
               "pmsm: 'data' reads datasets; the simulator parameters (speed, seed) cannot be given with it");
     EXPECT_THROW((void)builtin_problems().create("pmsm:data=/nonexistent.csv"), std::runtime_error);
 }

@@ -6,16 +6,12 @@
 
 #include "problems/pmsm/dataset_csv.hpp"
 #include "problems/pmsm/drive_simulator.hpp"
+#include "support/numbers.hpp"
 
 namespace mhb::pmsm {
 namespace {
 
-double max_abs_difference(const std::vector<double>& a, const std::vector<double>& b) {
-    double m = 0;
-    for (std::size_t k = 0; k < a.size(); ++k)
-        m = std::max(m, std::fabs(a[k] - b[k]));
-    return m;
-}
+using mhb::test_support::max_abs_difference;
 
 // Eq. 2 holds only in steady state; what is left in the window is the tail of the transient after
 // the previous injection step (L di/dt, the speed loop still pulling omega in by ~1e-2 rad/s),

@@ -21,8 +21,8 @@ namespace fs = std::filesystem;
 // A run of `algorithm` on cec2017 function `f` at dimension `dimension` whose final error is `error`
 // (f* = 100 f), recorded as two improvements: the first evaluation (an error of 1000 + floor(error)),
 // then the final value at evaluation 500.
-RunRecord run(std::int64_t id, const std::string& algorithm, int f, std::int64_t dimension,
-              std::int64_t index, double error) {
+RunRecord cec_run(std::int64_t id, const std::string& algorithm, int f, std::int64_t dimension,
+                  std::int64_t index, double error) {
     RunRecord r;
     r.run_id = id;
     r.algorithm = algorithm;
@@ -54,7 +54,7 @@ StudyData two_function_study() {
         for (const std::string algorithm : {"a", "b"})
             for (std::int64_t i = 0; i < 3; ++i) {
                 const auto& errors = f == 1 ? (algorithm == "a" ? a1 : b1) : (algorithm == "a" ? a3 : b3);
-                data.runs.push_back(run(id++, algorithm, f, 10, i, errors[static_cast<std::size_t>(i)]));
+                data.runs.push_back(cec_run(id++, algorithm, f, 10, i, errors[static_cast<std::size_t>(i)]));
             }
     return data;
 }
@@ -173,8 +173,8 @@ TEST(CecTables, TheCec2017ScoreWeighsTheFourDimensions) {
     std::int64_t id = 0;
     for (std::int64_t d : {10, 30, 50, 100})
         for (std::int64_t i = 0; i < 2; ++i) {
-            data.runs.push_back(run(id++, "a", 1, d, i, 1.0));
-            data.runs.push_back(run(id++, "b", 1, d, i, 3.0));
+            data.runs.push_back(cec_run(id++, "a", 1, d, i, 1.0));
+            data.runs.push_back(cec_run(id++, "b", 1, d, i, 3.0));
         }
     const StudyIndex index(data);
     const auto tables = cec_tables(index, *find_cec_protocol("cec2017"), "a", 0.05);

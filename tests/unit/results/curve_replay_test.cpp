@@ -19,11 +19,12 @@
 #include "results/analysis/statistics.hpp"
 #include "results/store/csv.hpp"
 #include "runner/run/execute_run.hpp"
+#include "support/numbers.hpp"
 
 namespace mhb {
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+using mhb::test_support::inf;
 
 enum class Shape { plain, staircase, infinite_half };
 

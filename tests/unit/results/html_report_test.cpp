@@ -15,6 +15,8 @@
 #include "results/report/report.hpp"
 #include "results/store/store.hpp"
 #include "support/files.hpp"
+#include "support/table_cells.hpp"
+#include "support/text.hpp"
 
 namespace mhb {
 namespace {
@@ -22,12 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 using mhb::test_support::read_text;
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-        ++n;
-    return n;
-}
+using mhb::test_support::count;
 
 // The values of every `marker`...`end` in `text`, e.g. every id="..." or url(#...).
 std::vector<std::string> values_after(const std::string& text, const std::string& marker, char end) {
@@ -57,13 +54,7 @@ std::string figure_svg(const std::string& title) {
            "</svg>\n";
 }
 
-// A cell by its fields' names (TableCell may grow more fields).
-TableCell cell(const std::string& text, const std::string& value, bool bold) {
-    TableCell c = text_cell(text);
-    c.value = value;
-    c.bold = bold;
-    return c;
-}
+using mhb::test_support::cell;
 
 Table table(const std::string& id, const std::string& title, const std::string& caption) {
     Table t;
@@ -249,7 +240,7 @@ TEST(HtmlReportUrl, IsAbsoluteAndPercentEncoded) {
     EXPECT_EQ(file_url("rel/index.html").rfind("file:///", 0), 0u);
 }
 
-RunRecord run(const std::string& algorithm, std::int64_t index, std::int64_t id) {
+RunRecord html_run(const std::string& algorithm, std::int64_t index, std::int64_t id) {
     RunRecord r;
     r.run_id = id;
     r.algorithm = algorithm;
@@ -275,7 +266,7 @@ TEST(HtmlReportOfAStudy, BuildReportWritesOnePageWithEveryTable) {
         std::int64_t id = 0;
         for (const char* algorithm : {"itlbo", "tlbo"})
             for (std::int64_t i = 0; i < 4; ++i)
-                writer.append(run(algorithm, i, id++), 0.01);
+                writer.append(html_run(algorithm, i, id++), 0.01);
         writer.finish();
     }
     ReportOptions options;

@@ -4,16 +4,12 @@
 #include <string>
 
 #include "results/html/html_svg.hpp"
+#include "support/text.hpp"
 
 namespace mhb {
 namespace {
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-        ++n;
-    return n;
-}
+using mhb::test_support::count;
 
 // The head and a few elements of what matplotlib 3.6 writes with svg.fonttype = none.
 const std::string matplotlib_svg =

@@ -5,19 +5,14 @@
 
 #include "results/html/html_escape.hpp"
 #include "results/html/html_table.hpp"
+#include "support/table_cells.hpp"
 
 namespace mhb {
 namespace {
 
-// A cell by its fields' names (TableCell may grow more fields).
-TableCell cell(const std::string& text, const std::string& value, bool bold) {
-    TableCell c = text_cell(text);
-    c.value = value;
-    c.bold = bold;
-    return c;
-}
+using mhb::test_support::cell;
 
-Table sample() {
+Table sample_table() {
     Table t;
     t.id = "tests";
     t.title = "Tests <against> \"itlbo\" & co";
@@ -32,7 +27,7 @@ Table sample() {
 }
 
 TEST(HtmlTable, EscapesEveryTextAndKeepsTheStructure) {
-    const std::string html = render_html_table(sample(), "t-tests", 3);
+    const std::string html = render_html_table(sample_table(), "t-tests", 3);
     EXPECT_NE(html.find("<section class=\"table\" id=\"t-tests\">"), std::string::npos);
     EXPECT_NE(html.find("<h3>Tests &lt;against&gt; &quot;itlbo&quot; &amp; co</h3>"), std::string::npos);
     EXPECT_NE(html.find("Holm&#39;s correction, alpha = 0.05 &amp; 5 runs &lt;each&gt;."), std::string::npos);
@@ -49,7 +44,7 @@ TEST(HtmlTable, EscapesEveryTextAndKeepsTheStructure) {
 }
 
 TEST(HtmlTable, CarriesFullPrecisionBoldAndAlignment) {
-    const std::string html = render_html_table(sample(), "x", 4);
+    const std::string html = render_html_table(sample_table(), "x", 4);
     EXPECT_NE(html.find("<td data-value=\"0.00123456789\">0.0012</td>"), std::string::npos) << html;
     EXPECT_NE(html.find("<td>inf</td>"),
               std::string::npos); // "p" is numeric: inf and the dash do not change that
@@ -77,7 +72,7 @@ TEST(HtmlEscape, EscapesMarkupAndMakesAnchors) {
 }
 
 TEST(HtmlTable, FooterRowsAreATfootAfterTheBody) {
-    Table t = sample();
+    Table t = sample_table();
     t.add_footer({text_cell("w/t/l"), text_cell(""), text_cell(""), text_cell("1/1/1")});
     const std::string html = render_html_table(t, "t-tests", 3);
     const auto body_end = html.find("</tbody>");
@@ -86,7 +81,7 @@ TEST(HtmlTable, FooterRowsAreATfootAfterTheBody) {
     ASSERT_NE(foot, std::string::npos);
     EXPECT_LT(body_end, foot);
     EXPECT_NE(html.find("1/1/1</td></tr>\n</tfoot>"), std::string::npos);
-    EXPECT_EQ(render_html_table(sample(), "t-tests", 3).find("<tfoot>"), std::string::npos);
+    EXPECT_EQ(render_html_table(sample_table(), "t-tests", 3).find("<tfoot>"), std::string::npos);
 }
 
 } // namespace

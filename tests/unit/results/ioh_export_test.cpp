@@ -9,21 +9,22 @@
 #include <sstream>
 
 #include "results/exports/ioh_export.hpp"
+#include "support/numbers.hpp"
 
 namespace mhb {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+using mhb::test_support::inf;
 
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_ioh_export_dir(const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / ("mhb_ioh_export_" + name);
     fs::remove_all(dir);
     return dir;
 }
 
-std::string read_text(const fs::path& path) {
+std::string read_existing_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     EXPECT_TRUE(in) << path;
     std::stringstream buffer;
@@ -124,8 +125,8 @@ TEST(IohExport, OtherFamiliesHaveFixedIdsAndParametersMakeDistinctStableFunction
     EXPECT_NE(long_name.name, ioh_function("pmsm:data=" + std::string(300, 'a') + "b.csv").name);
 }
 
-RunRecord run(std::int64_t id, const std::string& algorithm, const std::string& problem, std::int64_t index,
-              double best_f, std::int64_t evaluations) {
+RunRecord ioh_run(std::int64_t id, const std::string& algorithm, const std::string& problem,
+                  std::int64_t index, double best_f, std::int64_t evaluations) {
     RunRecord r;
     r.run_id = id;
     r.algorithm = algorithm;
@@ -143,35 +144,35 @@ RunRecord run(std::int64_t id, const std::string& algorithm, const std::string& 
 TEST(IohExport, RowsAreTheImprovementsAndTheLastEvaluation) {
     StudyData data;
     // An improvement at 1, 4 and 6, then the last evaluation (10) with its own f.
-    RunRecord a = run(0, "de", "sphere:dim=2", 0, 0.5, 10);
+    RunRecord a = ioh_run(0, "de", "sphere:dim=2", 0, 0.5, 10);
     a.improvements = ImprovementTrace{{{1, 10.0}, {4, 2.5}, {6, 0.5}}, 3.0};
     // The last evaluation is the last improvement: no extra row.
-    RunRecord b = run(1, "de", "sphere:dim=2", 1, 0.25, 10);
+    RunRecord b = ioh_run(1, "de", "sphere:dim=2", 1, 0.25, 10);
     b.improvements = ImprovementTrace{{{1, 7.0}, {10, 0.25}}, 0.25};
     // The last evaluation at +inf: None, as IOH writes it.
-    RunRecord c = run(2, "de", "sphere:dim=2", 2, 1.0, 10);
+    RunRecord c = ioh_run(2, "de", "sphere:dim=2", 2, 1.0, 10);
     c.improvements = ImprovementTrace{{{2, 1.0}}, inf};
     // Never a finite value: left out.
-    RunRecord d = run(3, "de", "sphere:dim=2", 3, inf, 10);
+    RunRecord d = ioh_run(3, "de", "sphere:dim=2", 3, inf, 10);
     d.improvements = ImprovementTrace{{}, inf};
     // BBOB: raw_y is f - f_opt.
-    RunRecord e = run(4, "de", "bbob:dim=2,f=1,instance=2", 0, 80.48, 5);
+    RunRecord e = ioh_run(4, "de", "bbob:dim=2,f=1,instance=2", 0, 80.48, 5);
     e.f_opt = 79.48;
     e.improvements = ImprovementTrace{{{1, 90.48}, {3, 80.48}}, 85.0};
     data.runs = {a, b, c, d, e};
 
-    const fs::path dir = fresh_dir("rows");
+    const fs::path dir = fresh_ioh_export_dir("rows");
     const IohExportSummary summary = write_ioh_export(StudyIndex(data), dir);
     EXPECT_EQ(summary.runs_left_out, 1u);
     EXPECT_EQ(summary.none_values, 1u);
     EXPECT_EQ(summary.approximate_runs, 0u);
     EXPECT_EQ(summary.files, 4u);
-    EXPECT_EQ(read_text(dir / "de" / "data_f101_sphere" / "IOHprofiler_f101_DIM2.dat"),
+    EXPECT_EQ(read_existing_text(dir / "de" / "data_f101_sphere" / "IOHprofiler_f101_DIM2.dat"),
               "evaluations raw_y\n1 10.0000000000\n4 2.5000000000\n6 0.5000000000\n10 3.0000000000\n"
               "evaluations raw_y\n1 7.0000000000\n10 0.2500000000\n"
               "evaluations raw_y\n2 1.0000000000\n10 None\n");
     EXPECT_EQ(
-        read_text(dir / "de" / "IOHprofiler_f101_sphere.json"),
+        read_existing_text(dir / "de" / "IOHprofiler_f101_sphere.json"),
         "{\n\t\"version\": \"0.3.23\", \n\t\"suite\": \"mhbench\", \n\t\"function_id\": 101, "
         "\n\t\"function_name\": \"sphere\", \n\t\"maximization\": false, "
         "\n\t\"algorithm\": {\"name\": \"de\", \"info\": \"mhbench de, budget evaluations=10\"},"
@@ -182,9 +183,9 @@ TEST(IohExport, RowsAreTheImprovementsAndTheLastEvaluation) {
         "-1.5]}},\n"
         "\t\t\t{\"instance\": 1, \"evals\": 10, \"best\": {\"evals\": 2, \"y\": 1, \"x\": [0.25, -1.5]}}"
         "\n\t\t]}\n\t]\n}\n");
-    EXPECT_EQ(read_text(dir / "de" / "data_f1_Sphere" / "IOHprofiler_f1_DIM2.dat"),
+    EXPECT_EQ(read_existing_text(dir / "de" / "data_f1_Sphere" / "IOHprofiler_f1_DIM2.dat"),
               "evaluations raw_y\n1 11.0000000000\n3 1.0000000000\n5 5.5200000000\n");
-    const std::string bbob = read_text(dir / "de" / "IOHprofiler_f1_Sphere.json");
+    const std::string bbob = read_existing_text(dir / "de" / "IOHprofiler_f1_Sphere.json");
     EXPECT_NE(bbob.find("\"suite\": \"BBOB\""), std::string::npos) << bbob;
     EXPECT_NE(bbob.find("{\"instance\": 2, \"evals\": 5, \"best\": {\"evals\": 3, \"y\": 1, \"x\""),
               std::string::npos)
@@ -194,53 +195,55 @@ TEST(IohExport, RowsAreTheImprovementsAndTheLastEvaluation) {
 // --ioh-precision full: raw_y with every digit, where the logger's %.10f reads tiny errors as 0.
 TEST(IohExport, FullPrecisionKeepsEveryDigitOfRawY) {
     StudyData data;
-    RunRecord a = run(0, "de", "sphere:dim=2", 0, 3.1e-12, 10);
+    RunRecord a = ioh_run(0, "de", "sphere:dim=2", 0, 3.1e-12, 10);
     a.improvements = ImprovementTrace{{{1, 10.0}, {4, 2.9e-9}, {6, 3.1e-12}}, 0.125};
-    RunRecord b = run(1, "de", "sphere:dim=2", 1, 1.0, 10);
+    RunRecord b = ioh_run(1, "de", "sphere:dim=2", 1, 1.0, 10);
     b.improvements = ImprovementTrace{{{2, 1.0}}, inf};
     data.runs = {a, b};
-    const fs::path logger = fresh_dir("precision_logger");
-    const fs::path full = fresh_dir("precision_full");
+    const fs::path logger = fresh_ioh_export_dir("precision_logger");
+    const fs::path full = fresh_ioh_export_dir("precision_full");
     (void)write_ioh_export(StudyIndex(data), logger);
     const IohExportSummary summary = write_ioh_export(StudyIndex(data), full, IohPrecision::full);
     EXPECT_EQ(summary.none_values, 1u);
     const fs::path dat = fs::path("de") / "data_f101_sphere" / "IOHprofiler_f101_DIM2.dat";
-    EXPECT_EQ(read_text(logger / dat), "evaluations raw_y\n1 10.0000000000\n4 0.0000000029\n6 0.0000000000\n"
-                                       "10 0.1250000000\nevaluations raw_y\n2 1.0000000000\n10 None\n");
-    EXPECT_EQ(read_text(full / dat),
+    EXPECT_EQ(read_existing_text(logger / dat),
+              "evaluations raw_y\n1 10.0000000000\n4 0.0000000029\n6 0.0000000000\n"
+              "10 0.1250000000\nevaluations raw_y\n2 1.0000000000\n10 None\n");
+    EXPECT_EQ(read_existing_text(full / dat),
               "evaluations raw_y\n1 10\n4 2.9e-09\n6 3.1e-12\n10 0.125\nevaluations raw_y\n2 1\n10 None\n");
     // The JSON is the same either way.
-    EXPECT_EQ(read_text(logger / "de" / "IOHprofiler_f101_sphere.json"),
-              read_text(full / "de" / "IOHprofiler_f101_sphere.json"));
+    EXPECT_EQ(read_existing_text(logger / "de" / "IOHprofiler_f101_sphere.json"),
+              read_existing_text(full / "de" / "IOHprofiler_f101_sphere.json"));
 }
 
 TEST(IohExport, RunsWithoutImprovementsUseTheirGridAndSaySo) {
     StudyData data;
-    RunRecord old = run(0, "pso", "pmsm:load=2,speed=2500", 0, 4.0, 1200);
+    RunRecord old = ioh_run(0, "pso", "pmsm:load=2,speed=2500", 0, 4.0, 1200);
     old.best_x = {0.3, 0.003, 0.003, 0.07};
     old.curve = {{0, 50, 16.0, {}}, {1, 100, 8.0, {}}, {2, 150, 8.0, {}}};
     old.checkpoints = {{1, 32.0}, {10, 16.0}, {100, 8.0}, {1200, 4.0}};
     data.runs = {old};
-    const fs::path dir = fresh_dir("grid");
+    const fs::path dir = fresh_ioh_export_dir("grid");
     const IohExportSummary summary = write_ioh_export(StudyIndex(data), dir);
     EXPECT_EQ(summary.approximate_runs, 1u);
     const IohFunction f = ioh_function(old.problem);
     const std::string stem = std::to_string(f.id) + "_" + f.name;
-    EXPECT_EQ(
-        read_text(dir / "pso" / ("data_f" + stem) / ("IOHprofiler_f" + std::to_string(f.id) + "_DIM4.dat")),
-        "evaluations raw_y\n1 32.0000000000\n10 16.0000000000\n100 8.0000000000\n1200 4.0000000000\n");
-    const std::string json = read_text(dir / "pso" / ("IOHprofiler_f" + stem + ".json"));
+    EXPECT_EQ(read_existing_text(dir / "pso" / ("data_f" + stem) /
+                                 ("IOHprofiler_f" + std::to_string(f.id) + "_DIM4.dat")),
+              "evaluations raw_y\n1 32.0000000000\n10 16.0000000000\n100 8.0000000000\n1200 4.0000000000\n");
+    const std::string json = read_existing_text(dir / "pso" / ("IOHprofiler_f" + stem + ".json"));
     EXPECT_NE(json.find("1 run stored before mhbench recorded improvements"), std::string::npos) << json;
     EXPECT_NE(json.find("\"best\": {\"evals\": 1200, \"y\": 4,"), std::string::npos) << json;
 }
 
 TEST(IohExport, IdsThatMeetAreMadeDistinctAndEveryAlgorithmNumbersAlike) {
     StudyData data;
-    data.runs = {run(0, "a", "sphere:dim=2", 0, 1.0, 10), run(1, "b", "pmsm:load=2,speed=2500", 0, 1.0, 10),
-                 run(2, "a", "pmsm:load=2,speed=2500", 0, 1.0, 10)};
+    data.runs = {ioh_run(0, "a", "sphere:dim=2", 0, 1.0, 10),
+                 ioh_run(1, "b", "pmsm:load=2,speed=2500", 0, 1.0, 10),
+                 ioh_run(2, "a", "pmsm:load=2,speed=2500", 0, 1.0, 10)};
     for (auto& r : data.runs)
         r.improvements = ImprovementTrace{{{1, 1.0}}, 1.0};
-    const fs::path dir = fresh_dir("ids");
+    const fs::path dir = fresh_ioh_export_dir("ids");
     write_ioh_export(StudyIndex(data), dir);
     const std::string name = "IOHprofiler_f200777259_pmsm_load_2_speed_2500.json";
     EXPECT_TRUE(fs::exists(dir / "a" / name));
@@ -249,14 +252,14 @@ TEST(IohExport, IdsThatMeetAreMadeDistinctAndEveryAlgorithmNumbersAlike) {
 }
 
 TEST(IohExport, WhatAnEarlierExportLeftIsRemovedAndNothingElse) {
-    const fs::path dir = fresh_dir("stale");
+    const fs::path dir = fresh_ioh_export_dir("stale");
     fs::create_directories(dir / "old_algorithm" / "data_f4_sphere_dim_2");
     std::ofstream(dir / "old_algorithm" / "IOHprofiler_f4_sphere_dim_2.json") << "{}";
     std::ofstream(dir / "old_algorithm" / "data_f4_sphere_dim_2" / "IOHprofiler_f4_DIM2.dat") << "x";
     fs::create_directories(dir / "mine");
     std::ofstream(dir / "mine" / "notes.txt") << "kept";
     StudyData data;
-    data.runs = {run(0, "de", "sphere:dim=2", 0, 1.0, 10)};
+    data.runs = {ioh_run(0, "de", "sphere:dim=2", 0, 1.0, 10)};
     data.runs[0].improvements = ImprovementTrace{{{1, 1.0}}, 1.0};
     write_ioh_export(StudyIndex(data), dir);
     EXPECT_FALSE(fs::exists(dir / "old_algorithm"));

@@ -18,25 +18,20 @@
 #include "results/exports/ioh_export.hpp"
 #include "results/store/csv.hpp"
 #include "runner/run/execute_run.hpp"
+#include "support/files.hpp"
 
 namespace mhb {
 namespace {
 
 namespace fs = std::filesystem;
+using mhb::test_support::read_text;
 
-const fs::path sample = fs::path(MHB_TEST_DATA_DIR) / "ioh" / "ioh_sample";
+const fs::path ioh_sample_dir = fs::path(MHB_TEST_DATA_DIR) / "ioh" / "ioh_sample";
 
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_ioh_sample_dir(const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / ("mhb_ioh_sample_" + name);
     fs::remove_all(dir);
     return dir;
-}
-
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
 }
 
 // The sample's points: a 31-bit LCG, each coordinate (s mod 4001 - 2000) / 400.
@@ -165,20 +160,20 @@ bool is_number(const std::string& token) {
 TEST(IohSample, ExportOfTheSameRunsMatchesWhatIohWrote) {
     const StudyData data = replayed_sample();
     const StudyIndex index(data);
-    const fs::path dir = fresh_dir("replay");
+    const fs::path dir = fresh_ioh_sample_dir("replay");
     const IohExportSummary summary = write_ioh_export(index, dir);
     EXPECT_EQ(summary.approximate_runs, 0u);
     EXPECT_EQ(summary.none_values, 0u);
     EXPECT_EQ(summary.runs_left_out, 0u);
     const fs::path ours = dir / "replay";
-    const std::set<std::string> files = relative_files(sample);
+    const std::set<std::string> files = relative_files(ioh_sample_dir);
     ASSERT_EQ(files.size(), 9u);
     EXPECT_EQ(relative_files(ours), files); // same names: ids, function names, dimensions
 
     std::size_t rows = 0;
     std::size_t identical_values = 0;
     for (const std::string& file : files) {
-        const std::string theirs_text = read_text(sample / file);
+        const std::string theirs_text = read_text(ioh_sample_dir / file);
         const std::string ours_text = read_text(ours / file);
         if (fs::path(file).extension() == ".dat") {
             const auto theirs = lines_of(theirs_text);
@@ -267,7 +262,7 @@ TEST(IohSample, RawYOfBbobIsCocosFMinusFOpt) {
         for (const Expected& e : by_problem[spec])
             expected[e.dat].push_back(e);
 
-    const fs::path dir = fresh_dir("coco");
+    const fs::path dir = fresh_ioh_sample_dir("coco");
     write_ioh_export(StudyIndex(data), dir);
     std::size_t compared = 0;
     for (const auto& [dat, values] : expected) {

@@ -12,15 +12,16 @@
 #include "results/store/csv.hpp"
 #include "results/store/record_codec.hpp"
 #include "results/store/store.hpp"
+#include "support/numbers.hpp"
 
 namespace mhb {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+using mhb::test_support::inf;
 
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_ioh_store_dir(const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / ("mhb_ioh_store_" + name);
     fs::remove_all(dir);
     return dir;
@@ -105,7 +106,7 @@ TEST(IohStore, ASectionFromANewerMhbenchIsSkipped) {
 }
 
 TEST(IohStore, StudyFilesKeepTheImprovementsExactly) {
-    const fs::path dir = fresh_dir("files");
+    const fs::path dir = fresh_ioh_store_dir("files");
     RunRecord a = record(0, 0, true);
     a.improvements->points.push_back({19, -inf});
     a.improvements->last_f = inf;
@@ -132,7 +133,7 @@ TEST(IohStore, StudyFilesKeepTheImprovementsExactly) {
 }
 
 TEST(IohStore, AMalformedImprovementsFileIsOneClearError) {
-    const fs::path dir = fresh_dir("malformed");
+    const fs::path dir = fresh_ioh_store_dir("malformed");
     {
         StudyWriter writer(dir, "study", "context", {}, false);
         writer.append(record(0, 0, true), 1.0);
@@ -183,7 +184,7 @@ void write_old_store(const fs::path& dir, const std::string& study_text, const s
 }
 
 TEST(IohStore, AStudyStoredBeforeImprovementsResumesReportsAndExports) {
-    const fs::path dir = fresh_dir("old");
+    const fs::path dir = fresh_ioh_store_dir("old");
     const std::string study_text = "runs = 3\n";
     write_old_store(dir, study_text, {record(0, 0, false), record(1, 1, false)});
     {

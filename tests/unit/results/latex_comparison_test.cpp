@@ -14,8 +14,8 @@
 namespace mhb {
 namespace {
 
-RunRecord run(const std::string& algorithm, const std::string& problem, const std::string& budget,
-              std::int64_t index, double f) {
+RunRecord comparison_run(const std::string& algorithm, const std::string& problem, const std::string& budget,
+                         std::int64_t index, double f) {
     static std::int64_t id = 0;
     RunRecord r;
     r.run_id = id++;
@@ -53,12 +53,13 @@ StudyData markers_study() {
     data.directory = "/nonexistent/markers";
     for (std::int64_t i = 0; i < 12; ++i) {
         const double base = 1.0 + static_cast<double>(i);
-        data.runs.push_back(run("itlbo", "better", "iterations=2", i, base));
-        data.runs.push_back(run("tlbo", "better", "iterations=2", i, base - 0.5));
-        data.runs.push_back(run("itlbo", "mixed", "iterations=2", i, base));
-        data.runs.push_back(run("tlbo", "mixed", "iterations=2", i, base + (i % 2 == 0 ? 0.5 : -0.5)));
-        data.runs.push_back(run("itlbo", "outlier", "iterations=2", i, i == 11 ? 1000.0 : 1.0));
-        data.runs.push_back(run("tlbo", "outlier", "iterations=2", i, 2.0));
+        data.runs.push_back(comparison_run("itlbo", "better", "iterations=2", i, base));
+        data.runs.push_back(comparison_run("tlbo", "better", "iterations=2", i, base - 0.5));
+        data.runs.push_back(comparison_run("itlbo", "mixed", "iterations=2", i, base));
+        data.runs.push_back(
+            comparison_run("tlbo", "mixed", "iterations=2", i, base + (i % 2 == 0 ? 0.5 : -0.5)));
+        data.runs.push_back(comparison_run("itlbo", "outlier", "iterations=2", i, i == 11 ? 1000.0 : 1.0));
+        data.runs.push_back(comparison_run("tlbo", "outlier", "iterations=2", i, 2.0));
     }
     return data;
 }
@@ -115,7 +116,7 @@ TEST(ComparisonTable, ShowsTheMedianTheMarkersAreAboutAndCountsThem) {
 
 // Runs that stop at different counts: "a" reaches its end after 400 evaluations, "b" after 1000.
 RunRecord budget_run(const std::string& algorithm, const std::string& budget, std::int64_t index) {
-    RunRecord r = run(algorithm, "sphere:dim=2", budget, index, 0.0);
+    RunRecord r = comparison_run(algorithm, "sphere:dim=2", budget, index, 0.0);
     if (algorithm == "a") {
         r.evaluations = 400;
         r.best_f = 5.0;
@@ -196,10 +197,11 @@ TEST(ComparisonTables, CaptionsSayWhenATestIsDegenerate) {
     StudyData data;
     data.directory = "/nonexistent/tied";
     for (std::int64_t i = 0; i < 6; ++i) {
-        data.runs.push_back(run("itlbo", "tied", "iterations=2", i, 0.0));
-        data.runs.push_back(run("tlbo", "tied", "iterations=2", i, 0.0));
-        data.runs.push_back(run("itlbo", "spread", "iterations=2", i, static_cast<double>(i)));
-        data.runs.push_back(run("tlbo", "spread", "iterations=2", i, static_cast<double>(i) + 0.5));
+        data.runs.push_back(comparison_run("itlbo", "tied", "iterations=2", i, 0.0));
+        data.runs.push_back(comparison_run("tlbo", "tied", "iterations=2", i, 0.0));
+        data.runs.push_back(comparison_run("itlbo", "spread", "iterations=2", i, static_cast<double>(i)));
+        data.runs.push_back(
+            comparison_run("tlbo", "spread", "iterations=2", i, static_cast<double>(i) + 0.5));
     }
     const StudyIndex index(data);
     const auto tables = comparison_tables(index, {"itlbo", 0.05, {1.0}});

@@ -10,12 +10,13 @@
 #include "results/table_model/table.hpp"
 #include "results/text/csv_table.hpp"
 #include "results/text/markdown_table.hpp"
+#include "support/numbers.hpp"
 
 namespace mhb {
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+using mhb::test_support::inf;
+constexpr double quiet_nan = std::numeric_limits<double>::quiet_NaN();
 
 std::vector<std::string> plain(const std::vector<double>& values, Digits digits) {
     const NumberFormat format = choose_number_format(values, digits);
@@ -49,12 +50,12 @@ TEST(ColumnFormat, IntegersHalvesAndFixedDecimals) {
 }
 
 TEST(ColumnFormat, InfinityAndUndefinedAreSpelledOutAndIgnoredForTheFormat) {
-    EXPECT_EQ(plain({1.5, inf, -inf, nan, 2.25}, {3, -1}),
+    EXPECT_EQ(plain({1.5, inf, -inf, quiet_nan, 2.25}, {3, -1}),
               (std::vector<std::string>{"1.50", "inf", "-inf", undefined_text, "2.25"}));
-    const NumberFormat format = choose_number_format({1.25, inf, nan}, {3, -1});
+    const NumberFormat format = choose_number_format({1.25, inf, quiet_nan}, {3, -1});
     EXPECT_EQ(latex_number(inf, format).math(), "$\\infty\\phantom{.00}$");
     EXPECT_EQ(latex_number(-inf, format).math(), "$-\\infty\\phantom{.00}$");
-    EXPECT_EQ(latex_number(nan, format).math(), "$\\mbox{---}\\phantom{.00}$");
+    EXPECT_EQ(latex_number(quiet_nan, format).math(), "$\\mbox{---}\\phantom{.00}$");
 }
 
 TEST(LatexNumber, TrueMinusSignsAndPowersOfTen) {

@@ -19,13 +19,13 @@ namespace {
 namespace fs = std::filesystem;
 using mhb::test_support::read_text;
 
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_report_factors_dir(const std::string& name) {
     const fs::path dir = mhb::test_support::fresh_temporary_path("mhb_report_factors_", name);
     return dir;
 }
 
-RunRecord run(const std::string& algorithm, const std::string& problem, const std::string& budget,
-              std::int64_t index, std::uint64_t seed, double f) {
+RunRecord factors_run(const std::string& algorithm, const std::string& problem, const std::string& budget,
+                      std::int64_t index, std::uint64_t seed, double f) {
     static std::int64_t id = 0;
     RunRecord r;
     r.run_id = id++;
@@ -44,9 +44,9 @@ RunRecord run(const std::string& algorithm, const std::string& problem, const st
     return r;
 }
 
-// Reference 1 + i; tlbo 1 + i + d_i (worse in 7 of 8 pairs); pso 1 + i + e_i (mixed); 8 runs each.
-const std::vector<double> d = {0.5, 0.25, -0.125, 0.75, 1.0, 0.375, 0.625, 0.875};
-const std::vector<double> e = {-0.5, 0.25, -0.125, 0.75, -1.0, 0.375, -0.625, 0.875};
+// Reference 1 + i; tlbo 1 + i + tlbo_d[i] (worse in 7 of 8 pairs); pso 1 + i + pso_e[i] (mixed); 8 runs each.
+const std::vector<double> tlbo_d = {0.5, 0.25, -0.125, 0.75, 1.0, 0.375, 0.625, 0.875};
+const std::vector<double> pso_e = {-0.5, 0.25, -0.125, 0.75, -1.0, 0.375, -0.625, 0.875};
 
 StudyData paired_study(bool common_seeds, const std::string& budget = "iterations=2") {
     StudyData data;
@@ -57,10 +57,10 @@ StudyData paired_study(bool common_seeds, const std::string& budget = "iteration
     for (std::size_t a = 0; a < 3; ++a)
         for (std::int64_t i = 0; i < 8; ++i) {
             const double base = 1.0 + static_cast<double>(i);
-            const double f = a == 0 ? base : base + (a == 1 ? d : e)[static_cast<std::size_t>(i)];
+            const double f = a == 0 ? base : base + (a == 1 ? tlbo_d : pso_e)[static_cast<std::size_t>(i)];
             const std::uint64_t seed = common_seeds ? 100 + static_cast<std::uint64_t>(i)
                                                     : 100 + 10 * a + static_cast<std::uint64_t>(i);
-            data.runs.push_back(run(data.algorithms[a].spec, "sphere:dim=2", budget, i, seed, f));
+            data.runs.push_back(factors_run(data.algorithms[a].spec, "sphere:dim=2", budget, i, seed, f));
         }
     return data;
 }
@@ -72,7 +72,7 @@ ReportOptions options_into(const fs::path& dir) {
     return options;
 }
 
-std::size_t row_of(const CsvTable& t, const std::string& column, const std::string& value) {
+std::size_t row_with_value(const CsvTable& t, const std::string& column, const std::string& value) {
     for (std::size_t r = 0; r < t.rows.size(); ++r)
         if (t.rows[r][t.column(column)] == value)
             return r;
@@ -102,11 +102,11 @@ TEST(Pairing, DetectedFromTheSeedsOfEachRunIndex) {
 }
 
 TEST(ReportPaired, SignedRankBesideRankSumAndMakesTheMarkers) {
-    const fs::path dir = fresh_dir("paired");
+    const fs::path dir = fresh_report_factors_dir("paired");
     std::ostringstream console;
     build_report(paired_study(true), options_into(dir), console);
     const CsvTable t = read_csv(dir / "tests.csv");
-    const std::size_t tlbo = row_of(t, "Algorithm", "TLBO");
+    const std::size_t tlbo = row_with_value(t, "Algorithm", "TLBO");
     // scipy.stats.wilcoxon(tlbo, itlbo, method='exact'): p = 0.015625 (V+ = 35); Holm over tlbo and
     // pso (p = 1.0): 0.03125 < 0.05, and V above its null mean 18: tlbo is worse.
     EXPECT_EQ(t.rows[tlbo][t.column("Paired runs")], "8");
@@ -118,7 +118,7 @@ TEST(ReportPaired, SignedRankBesideRankSumAndMakesTheMarkers) {
     EXPECT_EQ(t.rows[tlbo][t.column("Result by")], "signed-rank");
     // The rank-sum test alone sees overlapping samples and no difference.
     EXPECT_GT(t.number(tlbo, t.column("p (Holm)")), 0.5);
-    const std::size_t pso = row_of(t, "Algorithm", "PSO");
+    const std::size_t pso = row_with_value(t, "Algorithm", "PSO");
     EXPECT_DOUBLE_EQ(t.number(pso, t.column("Signed-rank p")), 1.0); // V = 18 = n (n + 1) / 4
     EXPECT_EQ(t.rows[pso][t.column("Result")], "=");
     const std::string tests_md = read_text(dir / "tests.md");
@@ -130,10 +130,10 @@ TEST(ReportPaired, SignedRankBesideRankSumAndMakesTheMarkers) {
               std::string::npos);
 
     // The same values with per-algorithm seeds: unpaired, the rank-sum test makes the markers.
-    const fs::path unpaired = fresh_dir("unpaired");
+    const fs::path unpaired = fresh_report_factors_dir("unpaired");
     build_report(paired_study(false), options_into(unpaired), console);
     const CsvTable u = read_csv(unpaired / "tests.csv");
-    const std::size_t row = row_of(u, "Algorithm", "TLBO");
+    const std::size_t row = row_with_value(u, "Algorithm", "TLBO");
     EXPECT_EQ(u.rows[row][u.column("Paired runs")], "no (seeds differ)");
     EXPECT_EQ(u.rows[row][u.column("Signed-rank p")], "");
     EXPECT_EQ(u.rows[row][u.column("Result")], "=");
@@ -143,7 +143,7 @@ TEST(ReportPaired, SignedRankBesideRankSumAndMakesTheMarkers) {
 }
 
 TEST(ReportLabels, NameTheAlgorithmsInTablesAndCurveData) {
-    const fs::path dir = fresh_dir("labels");
+    const fs::path dir = fresh_report_factors_dir("labels");
     std::ostringstream console;
     build_report(paired_study(true), options_into(dir), console);
     const CsvTable summary = read_csv(dir / "summary.csv");
@@ -159,7 +159,7 @@ TEST(ReportLabels, NameTheAlgorithmsInTablesAndCurveData) {
     const CsvTable finals = read_csv(dir / "final_values.csv");
     EXPECT_EQ(finals.rows.back()[finals.column("label")], "PSO");
     // A label also names the reference.
-    ReportOptions by_label = options_into(fresh_dir("labels_reference"));
+    ReportOptions by_label = options_into(fresh_report_factors_dir("labels_reference"));
     by_label.reference = "TLBO";
     build_report(paired_study(true), by_label, console);
     EXPECT_NE(read_text(by_label.out_dir / "tests.md").find("### Tests against the reference TLBO"),
@@ -173,7 +173,7 @@ TEST(ReportBudgets, EachBudgetInItsOwnFolderAndSaidInEveryTitle) {
         r.best_f *= 10.0; // the larger budget's values differ, so the folders can be told apart
         data.runs.push_back(r);
     }
-    const fs::path dir = fresh_dir("budgets");
+    const fs::path dir = fresh_report_factors_dir("budgets");
     std::ostringstream console;
     build_report(data, options_into(dir), console);
     const CsvTable budgets = read_csv(dir / "budgets.csv");
@@ -203,7 +203,7 @@ TEST(ReportBudgets, EachBudgetInItsOwnFolderAndSaidInEveryTitle) {
         std::remove_if(data.runs.begin(), data.runs.end(),
                        [](const RunRecord& r) { return r.algorithm == "pso" && r.budget == "iterations=2"; }),
         data.runs.end());
-    ReportOptions options = options_into(fresh_dir("budgets_reference"));
+    ReportOptions options = options_into(fresh_report_factors_dir("budgets_reference"));
     options.reference = "pso";
     std::ostringstream said;
     build_report(data, options, said);
@@ -211,7 +211,7 @@ TEST(ReportBudgets, EachBudgetInItsOwnFolderAndSaidInEveryTitle) {
               std::string::npos)
         << said.str();
     // A study without several budgets keeps the flat layout.
-    const fs::path flat = fresh_dir("one_budget");
+    const fs::path flat = fresh_report_factors_dir("one_budget");
     build_report(paired_study(true), options_into(flat), console);
     EXPECT_TRUE(fs::exists(flat / "summary.csv"));
     EXPECT_FALSE(fs::exists(flat / "budgets.csv"));
@@ -225,8 +225,8 @@ StudyData pmsm_variants_study() {
     std::int64_t id = 0;
     for (const auto& spec : specs)
         for (std::int64_t i = 0; i < 3; ++i) {
-            RunRecord r = run(spec, "pmsm:load=2,speed=2500", "", i, 7 + static_cast<std::uint64_t>(i),
-                              4.0 + 0.1 * static_cast<double>(i));
+            RunRecord r = factors_run(spec, "pmsm:load=2,speed=2500", "", i,
+                                      7 + static_cast<std::uint64_t>(i), 4.0 + 0.1 * static_cast<double>(i));
             r.run_id = id++;
             r.f_opt = 3.9;
             r.parameter_names = {"Rs", "Ld", "Lq", "psi"};
@@ -239,7 +239,7 @@ StudyData pmsm_variants_study() {
 }
 
 TEST(ReportPublished, OnlyBesideTheConfigurationsThePaperRan) {
-    const fs::path dir = fresh_dir("published");
+    const fs::path dir = fresh_report_factors_dir("published");
     std::ostringstream console;
     build_report(pmsm_variants_study(), options_into(dir), console);
     const CsvTable t2 = read_csv(dir / "table2_fitness.csv");
@@ -291,8 +291,8 @@ StudyData effects_study(const std::string& budget) {
                 // log10 f = -(3 + i / 8) [tutorial on] + (0.25 + i / 16) [obl on] - 1.
                 const double di = static_cast<double>(i);
                 const double y = -1.0 - (tutorial ? 3.0 + di / 8 : 0.0) + (obl ? 0.25 + di / 16 : 0.0);
-                data.runs.push_back(
-                    run(a.spec, problem, budget, i, 50 + static_cast<std::uint64_t>(i), std::pow(10.0, y)));
+                data.runs.push_back(factors_run(a.spec, problem, budget, i,
+                                                50 + static_cast<std::uint64_t>(i), std::pow(10.0, y)));
             }
     return data;
 }
@@ -300,7 +300,7 @@ StudyData effects_study(const std::string& budget) {
 // The design through the whole report.
 TEST(ReportEffects, TableAndPlotDataForAFactorialDesign) {
     const StudyData data = effects_study("iterations=2");
-    const fs::path dir = fresh_dir("effects");
+    const fs::path dir = fresh_report_factors_dir("effects");
     std::ostringstream console;
     build_report(data, options_into(dir), console);
     EXPECT_NE(console.str().find("factorial design itlbo: obl x tutorial (2^2)"), std::string::npos)
@@ -345,7 +345,7 @@ TEST(SlowReportEffectsFigures, DrawnPerBudget) {
         r.best_f = r.best_f > 1e-3 ? r.best_f : 0.0; // at the optimum: log10 of the floor, finite
         data.runs.push_back(r);
     }
-    options = options_into(fresh_dir("effects_figures"));
+    options = options_into(fresh_report_factors_dir("effects_figures"));
     options.figures = true;
     options.plot_script = fs::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
     std::ostringstream console;

@@ -23,6 +23,7 @@
 #include "results/text/csv_table.hpp"
 #include "results/text/markdown_table.hpp"
 #include "support/files.hpp"
+#include "support/numbers.hpp"
 #include "support/text.hpp"
 
 namespace mhb {
@@ -30,9 +31,9 @@ namespace {
 namespace fs = std::filesystem;
 using mhb::test_support::read_text;
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+using mhb::test_support::inf;
 
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_report_failures_dir(const std::string& name) {
     const fs::path dir = mhb::test_support::fresh_temporary_path("mhb_report_failures_", name);
     return dir;
 }
@@ -95,7 +96,8 @@ TEST(TableNumbers, NanIsNeverPrinted) {
 //   sphere:    itlbo finite; itlbo:obl=off runs 1 and 3 at +inf, run 5 failed; pso: every run failed.
 //   rastrigin: itlbo finite; itlbo:obl=off every run at +inf; pso run 2 at +inf.
 // So 7 failed runs and 2 + 6 + 1 = 9 runs at +inf.
-RunRecord run(const std::string& algorithm, const std::string& problem, std::int64_t index, double f) {
+RunRecord failures_run(const std::string& algorithm, const std::string& problem, std::int64_t index,
+                       double f) {
     static std::int64_t id = 0;
     RunRecord r;
     r.run_id = id++;
@@ -115,7 +117,7 @@ RunRecord run(const std::string& algorithm, const std::string& problem, std::int
 }
 
 RunRecord failed(const std::string& algorithm, const std::string& problem, std::int64_t index) {
-    RunRecord r = run(algorithm, problem, index, 0.0);
+    RunRecord r = failures_run(algorithm, problem, index, 0.0);
     r.ok = false;
     r.message = "the problem returned NaN at evaluation 7";
     r.best_f = std::numeric_limits<double>::quiet_NaN();
@@ -134,25 +136,26 @@ StudyData mixed_study() {
     const std::string rastrigin = "rastrigin:dim=2";
     for (std::int64_t i = 0; i < 6; ++i) {
         const double f = 1.0 + static_cast<double>(i);
-        data.runs.push_back(run("itlbo", sphere, i, f));
+        data.runs.push_back(failures_run("itlbo", sphere, i, f));
         if (i == 5)
             data.runs.push_back(failed("itlbo:obl=off", sphere, i));
         else
-            data.runs.push_back(run("itlbo:obl=off", sphere, i, i == 1 || i == 3 ? inf : 2.0 * f));
+            data.runs.push_back(failures_run("itlbo:obl=off", sphere, i, i == 1 || i == 3 ? inf : 2.0 * f));
         data.runs.push_back(failed("pso", sphere, i));
     }
     for (std::int64_t i = 0; i < 6; ++i) {
         const double f = 10.0 + static_cast<double>(i);
-        data.runs.push_back(run("itlbo", rastrigin, i, f));
-        data.runs.push_back(run("itlbo:obl=off", rastrigin, i, inf));
-        data.runs.push_back(run("pso", rastrigin, i, i == 2 ? inf : 3.0 * f));
+        data.runs.push_back(failures_run("itlbo", rastrigin, i, f));
+        data.runs.push_back(failures_run("itlbo:obl=off", rastrigin, i, inf));
+        data.runs.push_back(failures_run("pso", rastrigin, i, i == 2 ? inf : 3.0 * f));
     }
     return data;
 }
 
 using mhb::test_support::prints_nan;
 
-std::size_t row_of(const CsvTable& t, const std::string& problem, const std::string& label) {
+std::size_t row_of_problem_and_label(const CsvTable& t, const std::string& problem,
+                                     const std::string& label) {
     for (std::size_t r = 0; r < t.rows.size(); ++r)
         if (t.rows[r][0] == problem && t.rows[r][1] == label)
             return r;
@@ -163,7 +166,7 @@ std::size_t row_of(const CsvTable& t, const std::string& problem, const std::str
 class ReportFailures : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        dir_ = fresh_dir("mixed");
+        dir_ = fresh_report_failures_dir("mixed");
         ReportOptions options;
         options.out_dir = dir_;
         options.figures = false;
@@ -192,7 +195,7 @@ TEST_F(ReportFailures, NoFileOfTheReportPrintsNan) {
 
 TEST_F(ReportFailures, SummaryCountsRunsAndSaysWhatItLeftOut) {
     const CsvTable t = read_csv(dir_ / "summary.csv");
-    const std::size_t off = row_of(t, "sphere:dim=2", "ITLBO[O-]");
+    const std::size_t off = row_of_problem_and_label(t, "sphere:dim=2", "ITLBO[O-]");
     EXPECT_EQ(t.rows[off][t.column("Runs")], "5/6");
     EXPECT_EQ(t.rows[off][t.column("Mean")], "inf");
     EXPECT_EQ(t.rows[off][t.column("Std")], "inf");
@@ -200,10 +203,10 @@ TEST_F(ReportFailures, SummaryCountsRunsAndSaysWhatItLeftOut) {
     EXPECT_EQ(t.number(off, t.column("Median")), 10.0);
     EXPECT_EQ(t.number(off, t.column("Best")), 2.0);
     EXPECT_EQ(t.rows[off][t.column("Worst")], "inf");
-    const std::size_t pso = row_of(t, "sphere:dim=2", "PSO");
+    const std::size_t pso = row_of_problem_and_label(t, "sphere:dim=2", "PSO");
     EXPECT_EQ(t.rows[pso][t.column("Runs")], "0/6");
     EXPECT_EQ(t.rows[pso][t.column("Mean")], "no successful run (6 failed)");
-    const std::size_t all_inf = row_of(t, "rastrigin:dim=2", "ITLBO[O-]");
+    const std::size_t all_inf = row_of_problem_and_label(t, "rastrigin:dim=2", "ITLBO[O-]");
     EXPECT_EQ(t.rows[all_inf][t.column("Median")], "inf");
     EXPECT_EQ(t.number(all_inf, t.column("IQR")), 0.0);
 
@@ -238,7 +241,7 @@ TEST_F(ReportFailures, ComparisonNamesGroupsWithoutSuccessAndBoldsOnlyFiniteMean
     EXPECT_EQ(md.find("**inf"), std::string::npos) << md;
     // The rank tests keep +inf: ITLBO[O-] (every run +inf) is significantly worse on rastrigin.
     const CsvTable t = read_csv(dir_ / "tests.csv");
-    const std::size_t row = row_of(t, "rastrigin:dim=2", "ITLBO[O-]");
+    const std::size_t row = row_of_problem_and_label(t, "rastrigin:dim=2", "ITLBO[O-]");
     EXPECT_EQ(t.number(row, t.column("A12")), 1.0);
 }
 
@@ -248,7 +251,7 @@ TEST_F(ReportFailures, EffectsUseRanksWhereARunEndedAtInf) {
     for (std::size_t r = 0; r < e.rows.size(); ++r)
         EXPECT_EQ(e.rows[r][e.column("Scale")], "within-block rank") << e.rows[r][e.column("Problem")];
     // Sphere: 5 blocks (run 5 of ITLBO[O-] failed); in 2 of them obl=off is +inf, the worst rank.
-    const std::size_t sphere = row_of(e, "itlbo: obl (2^1)", "sphere:dim=2");
+    const std::size_t sphere = row_of_problem_and_label(e, "itlbo: obl (2^1)", "sphere:dim=2");
     EXPECT_EQ(e.rows[sphere][e.column("Blocks")], "5");
     // Every block: obl on is rank 1, off rank 2: the effect of obl is 1 - 2 = -1.
     EXPECT_EQ(e.number(sphere, e.column("Mean")), -1.0);
@@ -283,7 +286,7 @@ TEST(ReportFigureFailures, AFailingScriptIsOneLineAndTheReportStillSucceeds) {
     ReportOptions options;
     if (!find_matplotlib_python(options.python_candidates))
         GTEST_SKIP() << "no Python with matplotlib";
-    const fs::path dir = fresh_dir("failing_script");
+    const fs::path dir = fresh_report_failures_dir("failing_script");
     fs::create_directories(dir);
     const fs::path script = dir / "failing_plot.py";
     std::ofstream(script) << "def draw():\n    raise RuntimeError('boom: axis limits cannot be NaN or Inf')\n"
@@ -311,7 +314,7 @@ TEST(SlowReportFailureFigures, DrawnWithNotesAndExitZero) {
     ReportOptions options;
     if (!find_matplotlib_python(options.python_candidates))
         GTEST_SKIP() << "no Python with matplotlib";
-    const fs::path dir = fresh_dir("figures");
+    const fs::path dir = fresh_report_failures_dir("figures");
     options.out_dir = dir;
     options.plot_script = fs::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
     std::ostringstream console;
@@ -338,7 +341,7 @@ TEST(SlowReportFailureFigures, OneFailingFigureDoesNotStopTheOthers) {
     const auto python = find_matplotlib_python(options.python_candidates);
     if (!python)
         GTEST_SKIP() << "no Python with matplotlib";
-    const fs::path dir = fresh_dir("one_figure_fails");
+    const fs::path dir = fresh_report_failures_dir("one_figure_fails");
     options.out_dir = dir;
     options.figures = false;
     std::ostringstream console;

@@ -22,7 +22,7 @@ namespace mhb {
 namespace {
 namespace fs = std::filesystem;
 
-const std::vector<std::string> algorithms = {"itlbo", "tlbo", "pso"};
+const std::vector<std::string> report_algorithms = {"itlbo", "tlbo", "pso"};
 const std::vector<double> truth = {0.330, 0.00324, 0.00324, 0.0776};
 
 // PMSM runs: final f = base + step * i (i = 0..4), so ITLBO's mean is 4.02 and std
@@ -33,7 +33,7 @@ RunRecord pmsm_run(std::size_t a, std::int64_t i, std::int64_t id) {
     const std::int64_t evaluations[] = {1200, 600, 300};
     RunRecord r;
     r.run_id = id;
-    r.algorithm = algorithms[a];
+    r.algorithm = report_algorithms[a];
     r.problem = "pmsm:load=2,speed=2500";
     r.run_index = i;
     r.seed = static_cast<std::uint64_t>(1000 + id);
@@ -63,7 +63,7 @@ RunRecord pmsm_run(std::size_t a, std::int64_t i, std::int64_t id) {
 RunRecord sphere_run(std::size_t a, std::int64_t i, std::int64_t id) {
     RunRecord r;
     r.run_id = id;
-    r.algorithm = algorithms[a];
+    r.algorithm = report_algorithms[a];
     r.problem = "sphere:dim=2";
     r.run_index = i;
     r.seed = static_cast<std::uint64_t>(2000 + id);
@@ -85,10 +85,10 @@ fs::path make_study(const std::string& name) {
     const fs::path dir = mhb::test_support::fresh_temporary_path("mhb_report_test_", name);
     StudyWriter writer(dir, "[study]\nname=synthetic\n", "threads=1\n", {"Rs", "Ld", "Lq", "psi"}, false);
     std::int64_t id = 0;
-    for (std::size_t a = 0; a < algorithms.size(); ++a)
+    for (std::size_t a = 0; a < report_algorithms.size(); ++a)
         for (std::int64_t i = 0; i < 5; ++i)
             writer.append(pmsm_run(a, i, id++), 0.01);
-    for (std::size_t a = 0; a < algorithms.size(); ++a)
+    for (std::size_t a = 0; a < report_algorithms.size(); ++a)
         for (std::int64_t i = 0; i < 5; ++i)
             writer.append(sphere_run(a, i, id++), 0.01);
     writer.finish();

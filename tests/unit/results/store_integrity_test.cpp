@@ -16,13 +16,13 @@ namespace mhb {
 namespace {
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_store_integrity_dir(const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / ("mhb_store_integrity_" + name);
     fs::remove_all(dir);
     return dir;
 }
 
-RunRecord make_record(std::int64_t id) {
+RunRecord make_pso_sphere_record(std::int64_t id) {
     RunRecord r;
     r.run_id = id;
     r.algorithm = "pso";
@@ -75,11 +75,11 @@ void expect_same_files(const fs::path& a, const fs::path& b) {
 // A study of `count` runs written in one go: what every damaged or crashed one must end up as.
 // Named after the test: CTest runs the tests of this file in parallel processes.
 fs::path clean_study(std::int64_t count = 8) {
-    const fs::path dir =
-        fresh_dir(std::string("clean_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    const fs::path dir = fresh_store_integrity_dir(
+        std::string("clean_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     StudyWriter w = open_study(dir, count);
     for (std::int64_t id = 0; id < count; ++id)
-        w.append(make_record(id), 0.5);
+        w.append(make_pso_sphere_record(id), 0.5);
     w.finish();
     return dir;
 }
@@ -101,19 +101,19 @@ bool has_temporary_files(const fs::path& dir) {
 
 TEST(StoreIntegrity, AFlippedByteInARecordValueIsComputedAgainWithOneWarning) {
     const fs::path reference = clean_study(3);
-    const fs::path dir = fresh_dir("flipped");
+    const fs::path dir = fresh_store_integrity_dir("flipped");
     std::uintmax_t first_end = 0;
     {
         StudyWriter w = open_study(dir, 3);
-        w.append(make_record(0), 0.5);
+        w.append(make_pso_sphere_record(0), 0.5);
         first_end = fs::file_size(dir / "store.bin");
-        w.append(make_record(1), 0.5);
-        w.append(make_record(2), 0.5);
+        w.append(make_pso_sphere_record(1), 0.5);
+        w.append(make_pso_sphere_record(2), 0.5);
     }
     // One byte of run 1's best_f, inside its record body (the framing stays whole).
     std::string store = bytes_of(dir / "store.bin");
     ByteWriter value;
-    value.f64(make_record(1).best_f);
+    value.f64(make_pso_sphere_record(1).best_f);
     const auto at = store.find(value.bytes(), first_end);
     ASSERT_NE(at, std::string::npos);
     store[at] = static_cast<char>(store[at] ^ 0x01);
@@ -125,7 +125,7 @@ TEST(StoreIntegrity, AFlippedByteInARecordValueIsComputedAgainWithOneWarning) {
                                        ": the record of run 1 (pso, sphere:dim=2, evaluations=100, run 1) "
                                        "is damaged; it will be computed again");
         EXPECT_EQ(w.completed(), (std::set<std::int64_t>{0, 2}));
-        w.append(make_record(1), 0.5);
+        w.append(make_pso_sphere_record(1), 0.5);
         w.finish();
     }
     expect_same_files(dir, reference);
@@ -154,7 +154,7 @@ std::string rewrite_blocks(const std::string& store,
 
 TEST(StoreIntegrity, StoresOfTheFormerBlockFormatStillLoad) {
     const fs::path reference = clean_study(3);
-    const fs::path dir = fresh_dir("format3");
+    const fs::path dir = fresh_store_integrity_dir("format3");
     fs::copy(reference, dir);
     // Format 3: the same blocks without the checksum trailer (tag and CRC, 16 bytes).
     const std::string checksummed = bytes_of(dir / "store.bin");
@@ -186,18 +186,18 @@ TEST(StoreIntegrity, StoresOfTheFormerBlockFormatStillLoad) {
 
 TEST(StoreIntegrity, ACrashLosesOnlyTheRunsStoredSinceTheLastSync) {
     const fs::path reference = clean_study(8);
-    const fs::path dir = fresh_dir("crash");
+    const fs::path dir = fresh_store_integrity_dir("crash");
     std::uint64_t synced = 0;
     {
         StudyWriter w = open_study(dir);
         w.set_sync_policy({3, 1e9}); // every 3 runs; the clock never
-        w.append(make_record(0), 0.5);
-        w.append(make_record(1), 0.5);
+        w.append(make_pso_sphere_record(0), 0.5);
+        w.append(make_pso_sphere_record(1), 0.5);
         EXPECT_EQ(w.synced_bytes(), 0u);
-        w.append(make_record(2), 0.5);
+        w.append(make_pso_sphere_record(2), 0.5);
         EXPECT_EQ(w.synced_bytes(), fs::file_size(dir / "store.bin"));
         for (std::int64_t id = 3; id < 8; ++id)
-            w.append(make_record(id), 0.5);
+            w.append(make_pso_sphere_record(id), 0.5);
         synced = w.synced_bytes(); // after run 5
         ASSERT_LT(synced, fs::file_size(dir / "store.bin"));
     }
@@ -207,24 +207,24 @@ TEST(StoreIntegrity, ACrashLosesOnlyTheRunsStoredSinceTheLastSync) {
     const std::string dropped = store.substr(0, synced);
     const std::string zeroed = dropped + std::string(store.size() - synced, '\0');
     for (const std::string& after_crash : {dropped, zeroed}) {
-        const fs::path crashed = fresh_dir("crashed_" + std::to_string(after_crash.size()));
+        const fs::path crashed = fresh_store_integrity_dir("crashed_" + std::to_string(after_crash.size()));
         fs::copy(dir, crashed);
         write_bytes(crashed / "store.bin", after_crash);
         StudyWriter w = open_study(crashed);
         EXPECT_TRUE(w.warnings().empty());
         EXPECT_EQ(w.completed(), (std::set<std::int64_t>{0, 1, 2, 3, 4, 5}));
-        w.append(make_record(6), 0.5);
-        w.append(make_record(7), 0.5);
+        w.append(make_pso_sphere_record(6), 0.5);
+        w.append(make_pso_sphere_record(7), 0.5);
         w.finish();
         expect_same_files(crashed, reference);
     }
 }
 
 TEST(StoreIntegrity, FinishRendersExactlyTheRunsOfTheStudy) {
-    const fs::path dir = fresh_dir("missing");
+    const fs::path dir = fresh_store_integrity_dir("missing");
     StudyWriter w = open_study(dir, 3);
-    w.append(make_record(0), 0.5);
-    w.append(make_record(2), 0.5);
+    w.append(make_pso_sphere_record(0), 0.5);
+    w.append(make_pso_sphere_record(2), 0.5);
     try {
         w.finish();
         FAIL() << "a study without run 1 was rendered";
@@ -247,9 +247,9 @@ TEST(StoreIntegrity, FinishRendersExactlyTheRunsOfTheStudy) {
 }
 
 TEST(StoreIntegrity, FinishRefusesAStudyIniReplacedWhileTheStudyRan) {
-    const fs::path dir = fresh_dir("replaced");
+    const fs::path dir = fresh_store_integrity_dir("replaced");
     StudyWriter w = open_study(dir, 1);
-    w.append(make_record(0), 0.5);
+    w.append(make_pso_sphere_record(0), 0.5);
     write_file_atomically(dir / "study.ini", "[study]\nruns = 99\n"); // another process's study
     try {
         w.finish();
@@ -261,7 +261,7 @@ TEST(StoreIntegrity, FinishRefusesAStudyIniReplacedWhileTheStudyRan) {
 }
 
 TEST(StoreIntegrity, LoadStudyRefusesRunsRenderedForAnotherStudyIni) {
-    const fs::path dir = fresh_dir("mixed");
+    const fs::path dir = fresh_store_integrity_dir("mixed");
     fs::copy(clean_study(3), dir);
     ASSERT_EQ(load_study(dir).runs.size(), 3u);
     const std::string study = read_whole_file(dir / "study.ini");
@@ -305,7 +305,8 @@ TEST(StoreIntegrity, ARenderedFileTheDiskLostIsRefusedAndRenderedAgain) {
         const std::string bytes = bytes_of(reference / name);
         for (const std::string& after_crash :
              {std::string(), bytes.substr(0, bytes.size() / 2), std::string(bytes.size(), '\0')}) {
-            const fs::path dir = fresh_dir("lost_" + std::string(name) + std::to_string(after_crash.size()));
+            const fs::path dir =
+                fresh_store_integrity_dir("lost_" + std::string(name) + std::to_string(after_crash.size()));
             fs::copy(reference, dir);
             write_bytes(dir / name, after_crash);
             try {
@@ -324,9 +325,9 @@ TEST(StoreIntegrity, ARenderedFileTheDiskLostIsRefusedAndRenderedAgain) {
 }
 
 TEST(StoreIntegrity, NoTemporaryFileSurvivesAnError) {
-    const fs::path dir = fresh_dir("temporaries");
+    const fs::path dir = fresh_store_integrity_dir("temporaries");
     StudyWriter w = open_study(dir, 1);
-    w.append(make_record(0), 0.5);
+    w.append(make_pso_sphere_record(0), 0.5);
     fs::create_directory(dir / "runs.csv"); // the last rename fails
     EXPECT_THROW(w.finish(), std::runtime_error);
     EXPECT_FALSE(has_temporary_files(dir));

@@ -11,13 +11,13 @@ namespace mhb {
 namespace {
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_store_dir(const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / ("mhb_store_test_" + name);
     fs::remove_all(dir);
     return dir;
 }
 
-RunRecord make_record(std::int64_t id) {
+RunRecord make_pmsm_record(std::int64_t id) {
     RunRecord r;
     r.run_id = id;
     r.algorithm = "pso:c1=2,w=0.5";
@@ -39,15 +39,15 @@ RunRecord make_record(std::int64_t id) {
 }
 
 TEST(Store, KeepsEachRunsBudgetAndTheStudysAlgorithms) {
-    const fs::path dir = fresh_dir("budgets");
+    const fs::path dir = fresh_store_dir("budgets");
     const std::vector<AlgorithmInfo> algorithms = {
         {"itlbo:obl=off", "itlbo[O-]", "itlbo:np=50,obl=off,p=0.1"},
         {"tlbo", "TLBO, \"plain\"", "tlbo:np=50"}};
     {
         StudyWriter w(dir, "s\n", "", {}, false, algorithms);
-        RunRecord a = make_record(0);
+        RunRecord a = make_pmsm_record(0);
         a.budget = "iterations=150";
-        RunRecord b = make_record(1);
+        RunRecord b = make_pmsm_record(1);
         b.budget = "evaluations=15050,target=1e-08";
         w.append(b, 0.0);
         w.append(a, 0.0);
@@ -69,11 +69,11 @@ TEST(Store, KeepsEachRunsBudgetAndTheStudysAlgorithms) {
 }
 
 TEST(Store, RoundTripsRecordsExactlyAndSortsByRunId) {
-    const fs::path dir = fresh_dir("roundtrip");
+    const fs::path dir = fresh_store_dir("roundtrip");
     {
         StudyWriter w(dir, "[study]\nseed=1\n", "threads=2\n", {"Rs", "Ld", "Lq", "psi"}, false);
         for (std::int64_t id : {2, 0, 1}) // finishing out of order, as parallel runs do
-            w.append(make_record(id), 0.5);
+            w.append(make_pmsm_record(id), 0.5);
         RunRecord failed;
         failed.run_id = 3;
         failed.algorithm = "tlbo";
@@ -88,7 +88,7 @@ TEST(Store, RoundTripsRecordsExactlyAndSortsByRunId) {
     ASSERT_EQ(data.runs.size(), 4u);
     EXPECT_EQ(data.parameter_columns, (std::vector<std::string>{"Rs", "Ld", "Lq", "psi"}));
     for (std::int64_t id = 0; id < 3; ++id) {
-        const RunRecord expected = make_record(id);
+        const RunRecord expected = make_pmsm_record(id);
         const RunRecord& got = data.runs[static_cast<std::size_t>(id)];
         EXPECT_EQ(got.run_id, id);
         EXPECT_EQ(got.algorithm, expected.algorithm);
@@ -110,11 +110,11 @@ TEST(Store, RoundTripsRecordsExactlyAndSortsByRunId) {
 }
 
 TEST(Store, ResumesAnInterruptedStudyKeepingFinishedRunsOnly) {
-    const fs::path dir = fresh_dir("resume");
+    const fs::path dir = fresh_store_dir("resume");
     {
         StudyWriter w(dir, "study A\n", "", {}, false);
-        w.append(make_record(0), 0.1);
-        w.append(make_record(1), 0.1);
+        w.append(make_pmsm_record(0), 0.1);
+        w.append(make_pmsm_record(1), 0.1);
         // No finish(): the process is "killed" here. Simulate a half-written third block.
         std::ofstream(dir / "store.bin", std::ios::binary | std::ios::app)
             << "MHBRUN3\n\x40\0\0\0\0\0\0\0abc";
@@ -128,7 +128,7 @@ TEST(Store, ResumesAnInterruptedStudyKeepingFinishedRunsOnly) {
     {
         StudyWriter w(dir, "study A\n", "", {}, false);
         EXPECT_EQ(w.completed(), (std::set<std::int64_t>{0, 1}));
-        w.append(make_record(2), 0.1);
+        w.append(make_pmsm_record(2), 0.1);
         w.finish();
     }
     EXPECT_EQ(load_study(dir).runs.size(), 3u);
@@ -146,16 +146,16 @@ TEST(Store, ResumesAnInterruptedStudyKeepingFinishedRunsOnly) {
 TEST(Store, AHalfWrittenBlockBetweenCompleteOnesLosesOnlyItsRun) {
     // Threads write blocks concurrently at reserved positions, so a killed process may leave a
     // half-written block before complete ones: those are kept.
-    const fs::path dir = fresh_dir("hole");
+    const fs::path dir = fresh_store_dir("hole");
     std::uintmax_t first_end = 0;
     std::uintmax_t second_end = 0;
     {
         StudyWriter w(dir, "study A\n", "", {}, false);
-        w.append(make_record(0), 0.1);
+        w.append(make_pmsm_record(0), 0.1);
         first_end = fs::file_size(dir / "store.bin");
-        w.append(make_record(1), 0.1);
+        w.append(make_pmsm_record(1), 0.1);
         second_end = fs::file_size(dir / "store.bin");
-        w.append(make_record(2), 0.1);
+        w.append(make_pmsm_record(2), 0.1);
     }
     {
         // Zeros over the second half of run 1's block, end mark included, as an unfinished write
@@ -168,17 +168,17 @@ TEST(Store, AHalfWrittenBlockBetweenCompleteOnesLosesOnlyItsRun) {
     }
     StudyWriter w(dir, "study A\n", "", {}, false);
     EXPECT_EQ(w.completed(), (std::set<std::int64_t>{0, 2}));
-    w.append(make_record(1), 0.1);
+    w.append(make_pmsm_record(1), 0.1);
     w.finish();
     ASSERT_EQ(load_study(dir).runs.size(), 3u);
-    EXPECT_EQ(load_study(dir).runs[1].best_f, make_record(1).best_f);
+    EXPECT_EQ(load_study(dir).runs[1].best_f, make_pmsm_record(1).best_f);
 }
 
 TEST(Store, DamagedDirectoriesGiveErrorsNamingTheFile) {
-    const fs::path dir = fresh_dir("damaged");
+    const fs::path dir = fresh_store_dir("damaged");
     {
         StudyWriter w(dir, "s\n", "", {}, false);
-        w.append(make_record(0), 0.1);
+        w.append(make_pmsm_record(0), 0.1);
         w.finish();
     }
     // Truncate curves.csv in the middle of a line.
@@ -203,10 +203,10 @@ TEST(Store, DamagedDirectoriesGiveErrorsNamingTheFile) {
 // Found by tests/fuzz/fuzz_study_dir: evals_to_target was read as a double and cast, so 1e300 or nan
 // was undefined behaviour (a garbage count, or a UBSan report) rather than an error naming the cell.
 TEST(Store, EvaluationsToTargetIsReadAsAnInteger) {
-    const fs::path dir = fresh_dir("evals_to_target");
+    const fs::path dir = fresh_store_dir("evals_to_target");
     {
         StudyWriter w(dir, "s\n", "", {}, false);
-        RunRecord r = make_record(0);
+        RunRecord r = make_pmsm_record(0);
         r.evaluations_to_target = 1234;
         w.append(r, 0.1);
         w.finish();
@@ -246,14 +246,14 @@ TEST(Store, UnwritableOutputIsAClearError) {
 // temporary file: the same command must take the directory up again, and any other file still
 // makes it "not a mhbench study".
 TEST(Store, ADirectoryKilledBeforeItsMarkerWasWholeIsTakenUpAgain) {
-    const fs::path dir = fresh_dir("killed_before_marker");
+    const fs::path dir = fresh_store_dir("killed_before_marker");
     fs::create_directories(dir);
     std::ofstream(dir / StudyFiles::lock) << "command = mhbench run\n";
     std::ofstream(dir / (std::string(StudyFiles::marker) + ".tmp")) << "mhbench stu";
     EXPECT_NO_THROW(StudyWriter(dir, "s\n", "", {}, false));
     EXPECT_TRUE(fs::exists(dir / StudyFiles::marker));
 
-    const fs::path other = fresh_dir("killed_before_marker_other");
+    const fs::path other = fresh_store_dir("killed_before_marker_other");
     fs::create_directories(other);
     std::ofstream(other / StudyFiles::lock) << "command = mhbench run\n";
     std::ofstream(other / "notes.txt") << "mine";

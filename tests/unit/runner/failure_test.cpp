@@ -9,12 +9,13 @@
 #include "problems/objective.hpp"
 #include "runner/run/execute_run.hpp"
 #include "runner/study/study.hpp"
+#include "support/numbers.hpp"
 #include "tests/unit/runner/test_problem.hpp"
 
 namespace mhb {
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+using mhb::test_support::inf;
 
 // A problem whose every method can be made to throw.
 class ThrowingProblem final : public Problem {

@@ -37,7 +37,7 @@ PreparedStudy make_study() {
     return prepare_study(s);
 }
 
-RunnerOutcome run_into(const fs::path& dir, const PreparedStudy& study, RunnerOptions options) {
+RunnerOutcome run_with_options_into(const fs::path& dir, const PreparedStudy& study, RunnerOptions options) {
     StudyWriter writer(dir, study_ini(study.study), "threads = test\n", study.parameter_columns, false);
     return run_study(study, writer, options);
 }
@@ -55,7 +55,7 @@ TEST(ParallelRunner, RunsEveryRunOnceAndFinishesTheStudy) {
         EXPECT_EQ(total, 16);
         progress.push_back(kept);
     };
-    const RunnerOutcome outcome = run_into(dir, study, options);
+    const RunnerOutcome outcome = run_with_options_into(dir, study, options);
     EXPECT_FALSE(outcome.interrupted);
     EXPECT_EQ(outcome.total, 16);
     EXPECT_EQ(outcome.kept, 16);
@@ -83,9 +83,9 @@ TEST(ParallelRunner, OutputIsByteIdenticalForOneAndTwoThreads) {
     const fs::path two = fresh_dir("threads2");
     RunnerOptions options;
     options.threads = 1;
-    run_into(one, study, options);
+    run_with_options_into(one, study, options);
     options.threads = 2;
-    run_into(two, study, options);
+    run_with_options_into(two, study, options);
     for (const char* name : deterministic_files)
         EXPECT_EQ(read_text(one / name), read_text(two / name)) << name;
 }
@@ -107,9 +107,9 @@ TEST(ParallelRunner, NestedPopulationEvaluationGivesTheRecordsOfOneThread) {
     const fs::path two = fresh_dir("nested2");
     RunnerOptions options;
     options.threads = 1;
-    run_into(one, study, options);
+    run_with_options_into(one, study, options);
     options.threads = 2;
-    run_into(two, study, options);
+    run_with_options_into(two, study, options);
     for (const char* name : deterministic_files)
         EXPECT_EQ(read_text(one / name), read_text(two / name)) << name;
 }
@@ -119,7 +119,7 @@ TEST(ParallelRunner, CancelledAfterKRunsThenResumedMatchesAnUninterruptedStudy) 
     const fs::path reference = fresh_dir("reference");
     RunnerOptions plain;
     plain.threads = 2;
-    run_into(reference, study, plain);
+    run_with_options_into(reference, study, plain);
 
     const fs::path dir = fresh_dir("resumed");
     std::atomic<bool> stop{false};
@@ -130,14 +130,14 @@ TEST(ParallelRunner, CancelledAfterKRunsThenResumedMatchesAnUninterruptedStudy) 
         if (kept == 5)
             stop.store(true);
     };
-    const RunnerOutcome first = run_into(dir, study, cancelling);
+    const RunnerOutcome first = run_with_options_into(dir, study, cancelling);
     EXPECT_TRUE(first.interrupted);
     EXPECT_EQ(first.kept, 5);
     EXPECT_FALSE(fs::exists(dir / "runs.csv")); // not a finished study
     EXPECT_TRUE(fs::exists(dir / "store.bin"));
     EXPECT_THROW((void)load_study(dir), std::runtime_error);
 
-    const RunnerOutcome second = run_into(dir, study, plain); // "run the same command again"
+    const RunnerOutcome second = run_with_options_into(dir, study, plain); // "run the same command again"
     EXPECT_FALSE(second.interrupted);
     EXPECT_EQ(second.resumed, 5);
     EXPECT_EQ(second.kept, 16);
@@ -152,7 +152,7 @@ TEST(ParallelRunner, AStopBeforeTheStartKeepsNothingAndResumesFromScratch) {
     std::atomic<bool> stop{true};
     RunnerOptions options;
     options.stop = &stop;
-    const RunnerOutcome outcome = run_into(dir, study, options);
+    const RunnerOutcome outcome = run_with_options_into(dir, study, options);
     EXPECT_TRUE(outcome.interrupted);
     EXPECT_EQ(outcome.kept, 0);
     EXPECT_FALSE(fs::exists(dir / "runs.csv"));
@@ -172,7 +172,7 @@ TEST(ParallelRunner, AFailingRunBecomesAFailedRecordAndTheStudyGoesOn) {
     s.budgets.front().max_iterations = 50; // 153 uniform draws: a value above 0.5 is all but certain
     const PreparedStudy study = prepare_study(s, builtin_algorithms(), problems);
     const fs::path dir = fresh_dir("failing");
-    const RunnerOutcome outcome = run_into(dir, study, {});
+    const RunnerOutcome outcome = run_with_options_into(dir, study, {});
     EXPECT_FALSE(outcome.interrupted);
     const StudyData data = load_study(dir);
     ASSERT_EQ(data.runs.size(), 3u);

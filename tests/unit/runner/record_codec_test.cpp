@@ -12,11 +12,12 @@
 #include <vector>
 
 #include "results/store/record_codec.hpp"
+#include "support/numbers.hpp"
 
 namespace mhb {
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+using mhb::test_support::inf;
 
 double nan_with_payload(std::uint64_t payload) {
     return std::bit_cast<double>(std::uint64_t{0x7ff8000000000000} | payload);

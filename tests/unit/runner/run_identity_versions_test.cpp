@@ -17,7 +17,7 @@
 namespace mhb {
 namespace {
 
-Study small_study() {
+Study small_pso_study() {
     Study study;
     study.algorithms = {"pso"};
     study.problems = {"sphere:dim=2"};
@@ -57,7 +57,7 @@ Registry<Product> from_module(const Registry<Product>& builtin, const std::strin
 }
 
 // Writes every run of `study` into a study directory at `dir`.
-void run_into(const std::filesystem::path& dir, const PreparedStudy& study) {
+void write_every_run_into(const std::filesystem::path& dir, const PreparedStudy& study) {
     StudyWriter writer(dir, "study", "", study.parameter_columns, false, study.algorithms,
                        study_run_keys(study));
     for (std::int64_t id = 0; id < study.run_count(); ++id)
@@ -77,7 +77,7 @@ std::string refusal(const std::filesystem::path& dir, const PreparedStudy& study
 }
 
 TEST(RunIdentityVersions, VersionOneHashesTheFactsOfBeforeVersions) {
-    const PreparedStudy study = prepare_study(small_study());
+    const PreparedStudy study = prepare_study(small_pso_study());
     const RunKey key = run_key(study, 1);
     const RunRequest request = study.request(1);
     // The facts as they were written before implementation versions existed.
@@ -90,8 +90,8 @@ TEST(RunIdentityVersions, VersionOneHashesTheFactsOfBeforeVersions) {
 }
 
 TEST(RunIdentityVersions, ABumpChangesTheIdentityAndNamesBothVersions) {
-    const PreparedStudy v1 = prepare_study(small_study());
-    const PreparedStudy v2 = prepare_study(small_study(), with_version(builtin_algorithms(), "pso", 2));
+    const PreparedStudy v1 = prepare_study(small_pso_study());
+    const PreparedStudy v2 = prepare_study(small_pso_study(), with_version(builtin_algorithms(), "pso", 2));
     const RunKey old_key = run_key(v1, 0);
     const RunKey new_key = run_key(v2, 0);
     EXPECT_NE(old_key.identity, new_key.identity);
@@ -99,7 +99,7 @@ TEST(RunIdentityVersions, ABumpChangesTheIdentityAndNamesBothVersions) {
     EXPECT_EQ(describe_run_change(old_key, new_key),
               "algorithm 'pso': the stored runs were made by version 1, this mhbench has version 2");
     const PreparedStudy p3 =
-        prepare_study(small_study(), builtin_algorithms(), with_version(builtin_problems(), "sphere", 3));
+        prepare_study(small_pso_study(), builtin_algorithms(), with_version(builtin_problems(), "sphere", 3));
     EXPECT_EQ(describe_run_change(old_key, run_key(p3, 0)),
               "problem 'sphere': the stored runs were made by version 1, this mhbench has version 3");
     // The seed does not depend on the version: a bumped optimiser is compared on the same streams.
@@ -108,10 +108,10 @@ TEST(RunIdentityVersions, ABumpChangesTheIdentityAndNamesBothVersions) {
 
 TEST(RunIdentityVersions, ExtendingRunsOfAnotherVersionIsRefusedUnlessRecomputed) {
     const auto dir = test_support::fresh_temporary_path("mhb_versions_", "extend");
-    const PreparedStudy v1 = prepare_study(small_study());
-    run_into(dir, v1);
+    const PreparedStudy v1 = prepare_study(small_pso_study());
+    write_every_run_into(dir, v1);
 
-    Study larger = small_study();
+    Study larger = small_pso_study();
     larger.runs = 3;
     EXPECT_EQ(refusal(dir, prepare_study(larger)), ""); // same version: extends
 
@@ -129,7 +129,7 @@ TEST(RunIdentityVersions, ExtendingRunsOfAnotherVersionIsRefusedUnlessRecomputed
 }
 
 TEST(RunIdentityVersions, APluginModulesHashJoinsTheIdentityWhileBuiltInsKeepTheirs) {
-    const Study study = small_study();
+    const Study study = small_pso_study();
     const RunKey built_in = run_key(prepare_study(study), 0);
     EXPECT_EQ(built_in.facts.find("module"), std::string::npos) << built_in.facts;
     const std::string one(64, 'a');

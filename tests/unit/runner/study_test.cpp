@@ -42,7 +42,7 @@ PreparedStudy prepare(const Study& s) {
     return prepare_study(s, builtin_algorithms(), ranged_problems());
 }
 
-Study small_study() {
+Study small_random_search_study() {
     Study s;
     s.algorithms = {"random-search:batch=4", "random-search:batch=7"};
     s.problems = {"sphere:dim=1-3", "sphere:bound=5,dim=2"};
@@ -61,7 +61,7 @@ std::vector<std::string> lines_of(const std::string& text) {
 }
 
 TEST(Study, ExpandsProblemRangesInPlaceAndNumbersRunsProblemAlgorithmRun) {
-    const PreparedStudy p = prepare(small_study());
+    const PreparedStudy p = prepare(small_random_search_study());
     // sphere:dim=1-3 becomes three problems, then the explicit one: 4 problems x 2 algorithms x 3 runs.
     EXPECT_EQ(p.problem_specs, (std::vector<std::string>{"sphere:dim=1", "sphere:dim=2", "sphere:dim=3",
                                                          "sphere:bound=5,dim=2"}));
@@ -93,8 +93,8 @@ TEST(Study, ExpandsProblemRangesInPlaceAndNumbersRunsProblemAlgorithmRun) {
 }
 
 TEST(Study, SpecsAreCanonicalSoParameterOrderDoesNotMatter) {
-    Study a = small_study();
-    Study b = small_study();
+    Study a = small_random_search_study();
+    Study b = small_random_search_study();
     b.problems = {"sphere:dim=1-3", "sphere:dim=2,bound=5"};
     EXPECT_EQ(prepare(a).problem_specs, prepare(b).problem_specs);
     EXPECT_EQ(study_ini(prepare(a).study), study_ini(prepare(b).study));
@@ -167,7 +167,7 @@ TEST(Study, RejectsRepeatedSpecsAMissingBudgetAndATargetWithoutOptimum) {
 
 TEST(Study, ParameterColumnsAreTheUnionOfNamedParametersInOrder) {
     // Test functions have no named parameters, so a sphere study has no parameter columns.
-    EXPECT_TRUE(prepare(small_study()).parameter_columns.empty());
+    EXPECT_TRUE(prepare(small_random_search_study()).parameter_columns.empty());
     // Identification problems name theirs; runs.csv gets the union, in order of first appearance.
     const ProblemRegistry problems =
         test::registry_of("named",
@@ -187,7 +187,7 @@ TEST(Study, ParameterColumnsAreTheUnionOfNamedParametersInOrder) {
 }
 
 TEST(StudyFile, RoundTripsTheSameStudy) {
-    Study s = small_study();
+    Study s = small_random_search_study();
     s.budgets.front().max_evaluations = 1234;
     s.budgets.front().target_error = 1e-8;
     s.seed = 18446744073709551615ULL; // the largest seed must survive the text
