@@ -30,7 +30,7 @@ struct Stderr {
     enum Kind { exact_lines, one_line_containing, containing } kind = exact_lines;
     std::vector<std::string> text;
 };
-Stderr says(std::vector<std::string> lines) {
+Stderr stderr_says(std::vector<std::string> lines) {
     return {Stderr::exact_lines, std::move(lines)};
 }
 // One line holding `part` (for messages with an OS's wording or a path that varies).
@@ -42,7 +42,7 @@ Stderr mentions(std::string part) {
     return {Stderr::containing, {std::move(part)}};
 }
 
-struct BadInput {
+struct BadInputCase {
     std::string setup; // shell commands run first in the case's directory; $F is the fixtures folder
     std::string args;  // mhbench's arguments as typed in a shell there, or a whole command in (...)
     int exit_code;
@@ -72,80 +72,80 @@ const std::string study_copy = "cp -r $F/study s";
 const std::string old_study_copy = study_copy + " && sed -i '/ bytes, crc32c /d' s/.mhbench-study";
 
 // clang-format off
-std::vector<BadInput> catalogue() {
+std::vector<BadInputCase> catalogue() {
     return {
         // ---- the top level
         {"", "", 2, mentions("Usage: mhbench <command> [options]")},
-        {"", "bogus", 2, says({"mhbench: unknown command 'bogus'; run mhbench --help for the list"})},
-        {"", "--bogus", 2, says({"mhbench: unknown command '--bogus'; run mhbench --help for the list"})},
-        {"", "--version --bogus", 2, says({"mhbench: --version takes no other argument (got '--bogus')"})},
+        {"", "bogus", 2, stderr_says({"mhbench: unknown command 'bogus'; run mhbench --help for the list"})},
+        {"", "--bogus", 2, stderr_says({"mhbench: unknown command '--bogus'; run mhbench --help for the list"})},
+        {"", "--version --bogus", 2, stderr_says({"mhbench: --version takes no other argument (got '--bogus')"})},
 
         // ---- run: options
         {"", "run --algorithms random-search" + tiny_run + " --bogus", 2,
-         says({"mhbench run: unrecognised option '--bogus' (see mhbench run --help)"})},
+         stderr_says({"mhbench run: unrecognised option '--bogus' (see mhbench run --help)"})},
         {"", "run --algorithms random-search --problems sphere --out s", 2,
-         says({"mhbench run: budget: give a number of iterations or of evaluations (or both)"})},
+         stderr_says({"mhbench run: budget: give a number of iterations or of evaluations (or both)"})},
         {"", "run --algorithms random-search --problems sphere --iterations 5 --runs 0 --out s", 2,
-         says({"mhbench run: study: runs = 0 is outside [1, 1000000]"})},
+         stderr_says({"mhbench run: study: runs = 0 is outside [1, 1000000]"})},
         {"", "run --algorithms random-search --problems sphere --evaluations 1e300 --out s", 2,
-         says({"mhbench run: evaluations = 1e300 is too large (at most 1000000000000000)"})},
+         stderr_says({"mhbench run: evaluations = 1e300 is too large (at most 1000000000000000)"})},
         {"", "run --algorithms random-search --problems sphere --evaluations '10000*D' --out s", 2,
-         says({"mhbench run: budget: parameter 'evaluations' = 10000*D multiplies by 'D', not by dim; write a "
+         stderr_says({"mhbench run: budget: parameter 'evaluations' = 10000*D multiplies by 'D', not by dim; write a "
                "count N, N*dim (N x the problem's dimension) or dimD:N+dimD:N+... (N at each dimension D "
                "listed), e.g. 10000*dim or dim10:200000+dim20:1000000"})},
         {"", "run --algorithms random-search --problems sphere:dim=2 --budget evaluations=dim10:100 --out s", 2,
-         says({"mhbench run: budget 'evaluations=dim10:100' gives no evaluations at dimension 2 (problem "
+         stderr_says({"mhbench run: budget 'evaluations=dim10:100' gives no evaluations at dimension 2 (problem "
                "'sphere:dim=2'); it lists 10"})},
         {"", "run --algorithms random-search" + tiny_run + " --protocol cec2017", 2,
-         says({"mhbench run: protocol cec2017: problem 'sphere:dim=2' is not of the cec2017 suite; the protocol's "
+         stderr_says({"mhbench run: protocol cec2017: problem 'sphere:dim=2' is not of the cec2017 suite; the protocol's "
                "tables and result files cover its functions only (write cec2017:f=...,dim=...)"})},
         {"", "run --algorithms random-search" + tiny_run + " --protocol cec2030", 2,
-         says({"mhbench run: protocol = cec2030 is not one of {cec2017, cec2022, none}"})},
+         stderr_says({"mhbench run: protocol = cec2030 is not one of {cec2017, cec2022, none}"})},
         {"", "run --algorithms random-search --problems sphere --runs 1e300 --iterations 5 --out s", 2,
-         says({"mhbench run: runs = 1e300 is too large (at most 1000000)"})},
+         stderr_says({"mhbench run: runs = 1e300 is too large (at most 1000000)"})},
         {"", "run --algorithms random-search --problems sphere --iterations lots --out s", 2,
-         says({"mhbench run: iterations = lots is not an integer"})},
+         stderr_says({"mhbench run: iterations = lots is not an integer"})},
         {"", "run --algorithms random-search --problems sphere --iterations " + big_digits + " --out s", 2,
-         says({"mhbench run: iterations = " + excerpt_of_ones + " is too large (at most 1000000000000000)"})},
+         stderr_says({"mhbench run: iterations = " + excerpt_of_ones + " is too large (at most 1000000000000000)"})},
         {"", "run --algorithms random-search" + tiny_run + " --seed ' -1'", 2,
-         says({"mhbench run: seed =  -1 is not an integer in [0, 2^64)"})},
+         stderr_says({"mhbench run: seed =  -1 is not an integer in [0, 2^64)"})},
         {"", "run --algorithms random-search" + tiny_run + " --seed 1e300", 2,
-         says({"mhbench run: seed = 1e300 is not an integer in [0, 2^64)"})},
+         stderr_says({"mhbench run: seed = 1e300 is not an integer in [0, 2^64)"})},
         {"", "run --algorithms random-search" + tiny_run + " --seeds sometimes", 2,
-         says({"mhbench run: seeds = sometimes is not one of {common, per-algorithm}"})},
+         stderr_says({"mhbench run: seeds = sometimes is not one of {common, per-algorithm}"})},
         {"", "run --algorithms random-search" + tiny_run + " --threads 0", 2,
-         says({"mhbench run: threads = 0 is outside [1, inf)"})},
+         stderr_says({"mhbench run: threads = 0 is outside [1, inf)"})},
         {"", "run --algorithms random-search" + tiny_run + " --target abc", 2,
-         says({"mhbench run: target = abc is not a finite number"})},
+         stderr_says({"mhbench run: target = abc is not a finite number"})},
         {"", "run --algorithms random-search --problems sphere --budget iterations=abc --out s", 2,
          one_line("iterations")},
         {"", "run --algorithms random-search --problems sphere --budget bogus=5 --out s", 2,
          one_line("bogus")},
         {"", "run --study nope", 2, one_line("mhbench run: unknown study 'nope'; known: ")},
         {"", "run --study smoke --study-file x.ini --out s", 2,
-         says({"mhbench run: give --study or --study-file, not both"})},
+         stderr_says({"mhbench run: give --study or --study-file, not both"})},
 
         // ---- run: specs and grids
         {"", "run --algorithms nope" + tiny_run, 2, one_line("mhbench run: unknown algorithm 'nope'; known: ")},
         {"", "run --algorithms random-search --problems nope --iterations 5 --out s", 2,
          one_line("mhbench run: unknown problem 'nope'; known: ")},
         {"", "run --algorithms itlbo:np=1e300" + tiny_run, 2,
-         says({"mhbench run: itlbo: parameter 'np' = 1e300 is too large (at most 100000)"})},
+         stderr_says({"mhbench run: itlbo: parameter 'np' = 1e300 is too large (at most 100000)"})},
         {"", "run --algorithms itlbo:np=-99999999999999999999" + tiny_run, 2,
-         says({"mhbench run: itlbo: parameter 'np' = -99999999999999999999 is too small (at least 2)"})},
+         stderr_says({"mhbench run: itlbo: parameter 'np' = -99999999999999999999 is too small (at least 2)"})},
         {"", "run --algorithms itlbo:np=" + big_digits + tiny_run, 2,
-         says({"mhbench run: itlbo: parameter 'np' = " + excerpt_of_ones + " is too large (at most 100000)"})},
+         stderr_says({"mhbench run: itlbo: parameter 'np' = " + excerpt_of_ones + " is too large (at most 100000)"})},
         {"", "run --algorithms itlbo:np=1.5" + tiny_run, 2,
-         says({"mhbench run: itlbo: parameter 'np' = 1.5 is not an integer"})},
+         stderr_says({"mhbench run: itlbo: parameter 'np' = 1.5 is not an integer"})},
         {"", "run --algorithms pso:w=" + repeated('x', 100000) + tiny_run, 2,
-         says({"mhbench run: pso: parameter 'w' = 'xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...' (100000 characters) "
+         stderr_says({"mhbench run: pso: parameter 'w' = 'xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...' (100000 characters) "
                "is not a finite number"})},
         {"", "run --algorithms pso:w=2" + tiny_run, 2,
-         says({"mhbench run: pso: parameter 'w' = 2 is outside [0, 1]"})},
+         stderr_says({"mhbench run: pso: parameter 'w' = 2 is outside [0, 1]"})},
         {"", "run --algorithms itlbo:obl=maybe" + tiny_run, 2,
-         says({"mhbench run: itlbo: parameter 'obl' = maybe is not one of on/off, true/false, yes/no, 1/0"})},
+         stderr_says({"mhbench run: itlbo: parameter 'obl' = maybe is not one of on/off, true/false, yes/no, 1/0"})},
         {"", "run --algorithms tlbo:tutorial=on" + tiny_run, 2,
-         says({"mhbench run: tlbo: unknown parameter 'tutorial'; known: np, r"})},
+         stderr_says({"mhbench run: tlbo: unknown parameter 'tutorial'; known: np, r"})},
         {"", "run --algorithms :np=5" + tiny_run, 2, one_line("a name is missing (write name:key=value,...)")},
         {"", "run --algorithms itlbo:np" + tiny_run, 2, one_line("np is not key=value")},
         {"", "run --algorithms itlbo:np=5,np=6" + tiny_run, 2, one_line("parameter 'np' is given twice")},
@@ -155,50 +155,50 @@ std::vector<BadInput> catalogue() {
         {"", "run --algorithms 'itlbo:obl={on,off,on}'" + tiny_run, 2,
          one_line("parameter 'obl': value 'on' is listed twice in the set")},
         {"", "run --algorithms random-search --problems 'bbob:f=1-25' --iterations 5 --out s", 2,
-         says({"mhbench run: bbob: parameter 'f' = 25 is outside [1, 24]"})},
+         stderr_says({"mhbench run: bbob: parameter 'f' = 25 is outside [1, 24]"})},
         {"", "run --algorithms random-search --problems sphere:dim=0 --iterations 5 --out s", 2,
-         says({"mhbench run: sphere: parameter 'dim' = 0 is outside [1, 10000]"})},
+         stderr_says({"mhbench run: sphere: parameter 'dim' = 0 is outside [1, 10000]"})},
         {"", "run --algorithms 'tlbo tlbo:np=50'" + tiny_run, 2, one_line("tlbo")},
 
         // ---- run: study files
         {"mkdir d", "run --study-file d --dry-run", 2,
-         says({"mhbench run: d: is a directory, not a study file (try d/study.ini)"})},
+         stderr_says({"mhbench run: d: is a directory, not a study file (try d/study.ini)"})},
         {"", "run --study-file none.ini --dry-run", 2,
-         says({"mhbench run: none.ini: cannot be read (No such file or directory)"})},
+         stderr_says({"mhbench run: none.ini: cannot be read (No such file or directory)"})},
         {"printf '\\357\\273\\277algorithms = random-search\\nproblems = sphere:dim=2\\nbudget = iterations=3\\n' > f.ini",
-         "run --study-file f.ini --dry-run", 0, says({})},
+         "run --study-file f.ini --dry-run", 0, stderr_says({})},
         {"printf 'algorithms = random-search\\nproblems = sphere\\niterations = 3\\nthreads = 4\\n' > f.ini",
          "run --study-file f.ini --dry-run", 2,
-         says({"mhbench run: f.ini:4: unknown key 'threads' (it is not part of a study: give --threads on the "
+         stderr_says({"mhbench run: f.ini:4: unknown key 'threads' (it is not part of a study: give --threads on the "
                "command line)"})},
         {"printf '[study]\\nalgorithms = random-search\\nproblems = sphere\\niterations = 3\\n' > f.ini",
          "run --study-file f.ini --dry-run", 2,
-         says({"mhbench run: f.ini:1: sections ('[study]') are not used in study files"})},
+         stderr_says({"mhbench run: f.ini:1: sections ('[study]') are not used in study files"})},
         {"printf 'algorithms = random-search\\nproblems = sphere\\niterations = 3\\nruns = many\\n' > f.ini",
-         "run --study-file f.ini --dry-run", 2, says({"mhbench run: f.ini:4: runs = many is not an integer"})},
+         "run --study-file f.ini --dry-run", 2, stderr_says({"mhbench run: f.ini:4: runs = many is not an integer"})},
         {"printf 'algorithms = random-search\\nproblems = sphere\\niterations = 3\\nruns = %s\\n' " + big_digits +
              " > f.ini",
          "run --study-file f.ini --dry-run", 2,
-         says({"mhbench run: f.ini:4: runs = " + excerpt_of_ones + " is too large (at most 1000000)"})},
+         stderr_says({"mhbench run: f.ini:4: runs = " + excerpt_of_ones + " is too large (at most 1000000)"})},
         {"printf 'algorithms = pso:w=2\\nproblems = sphere\\niterations = 3\\n' > f.ini",
-         "run --study-file f.ini --dry-run", 2, says({"mhbench run: f.ini:1: pso: parameter 'w' = 2 is outside [0, 1]"})},
+         "run --study-file f.ini --dry-run", 2, stderr_says({"mhbench run: f.ini:1: pso: parameter 'w' = 2 is outside [0, 1]"})},
         {"printf 'algorithms = random-search\\nproblems = sphere\\niterations = 3\\niterations = 4\\n' > f.ini",
-         "run --study-file f.ini --dry-run", 2, says({"mhbench run: f.ini:4: 'iterations' is given twice"})},
+         "run --study-file f.ini --dry-run", 2, stderr_says({"mhbench run: f.ini:4: 'iterations' is given twice"})},
 
         // ---- run: output directories
         {"echo x > file", "run --algorithms random-search --problems sphere --iterations 5 --out file/sub", 1,
-         says({"mhbench run: file/sub: cannot create the output directory (Not a directory)"})},
+         stderr_says({"mhbench run: file/sub: cannot create the output directory (Not a directory)"})},
         {"mkdir mine && echo notes > mine/study.ini && echo curves > mine/curves.csv", "run --study smoke --out mine", 1,
-         says({"mhbench run: mine: is not empty and is not a mhbench study (it has no .mhbench-study); its "
+         stderr_says({"mhbench run: mine: is not empty and is not a mhbench study (it has no .mhbench-study); its "
                "files are left alone: choose a new or empty --out"})},
         {"", "run --algorithms random-search --problems sphere --iterations 5 --out /sys/mhbench-test", 1,
          one_line("mhbench run: /sys/mhbench-test: cannot create the output directory (")}, // EPERM, EROFS...
         // An unfinished study whose store cannot be read on resume: the OS's reason.
         {study_copy + " && rm s/runs.csv s/store.bin && mkdir s/store.bin",
          "run --study smoke --runs 2 --evaluations 200 --no-report --quiet --out s", 1,
-         says({"mhbench run: s/store.bin: cannot be read (Is a directory)"}), "s"},
+         stderr_says({"mhbench run: s/store.bin: cannot be read (Is a directory)"}), "s"},
         {study_copy, "run --study smoke --runs 2 --evaluations 200 --seed 5 --out s", 1,
-         says({"mhbench run: s: 2 stored runs would change:",
+         stderr_says({"mhbench run: s: 2 stored runs would change:",
                "  seed = 5, but the stored runs were made with seed = 1",
                "pass --recompute-changed to compute these runs again (keeping every other stored run), "
                   "--overwrite to discard the stored runs and start again, or choose another --out"})},
@@ -214,58 +214,58 @@ std::vector<BadInput> catalogue() {
          "run --algorithms tlbo --problems pmsm:data=d.csv,fitness=direct --iterations 2 --out s", 2,
          one_line("d.csv: line 2, column 'ud': 1e300 is outside [-1e9, 1e9]")},
         {"(grep -v ',[01]$' $F/good.csv; grep ',0$' $F/good.csv | head -n 1; grep ',1$' $F/good.csv | head -n 3) > d.csv",
-         "run --algorithms tlbo --problems pmsm:data=d.csv --iterations 2 --out s", 0, says({}), "s"},
+         "run --algorithms tlbo --problems pmsm:data=d.csv --iterations 2 --out s", 0, stderr_says({}), "s"},
 
         // ---- simulate
-        {"", "simulate", 2, says({"mhbench simulate: --out FILE is required (see mhbench simulate --help)"})},
-        {"", "simulate --out x.csv --samples 501", 2, says({"mhbench simulate: --samples = 501 is outside [1, 500]"})},
+        {"", "simulate", 2, stderr_says({"mhbench simulate: --out FILE is required (see mhbench simulate --help)"})},
+        {"", "simulate --out x.csv --samples 501", 2, stderr_says({"mhbench simulate: --samples = 501 is outside [1, 500]"})},
         {"", "simulate --out x.csv --samples 1e300", 2,
-         says({"mhbench simulate: --samples = 1e300 is too large (at most 500)"})},
+         stderr_says({"mhbench simulate: --samples = 1e300 is too large (at most 500)"})},
         {"", "simulate --out x.csv --seed 99999999999999999999", 2,
-         says({"mhbench simulate: --seed = 99999999999999999999 is too large (at most 9223372036854775807)"})},
+         stderr_says({"mhbench simulate: --seed = 99999999999999999999 is too large (at most 9223372036854775807)"})},
         {"", "simulate --out x.csv --seed -1", 2,
-         says({"mhbench simulate: --seed = -1 is outside [0, 9223372036854775807]"})},
-        {"", "simulate --out x.csv --load abc", 2, says({"mhbench simulate: --load = abc is not a finite number"})},
+         stderr_says({"mhbench simulate: --seed = -1 is outside [0, 9223372036854775807]"})},
+        {"", "simulate --out x.csv --load abc", 2, stderr_says({"mhbench simulate: --load = abc is not a finite number"})},
         {"", "simulate --out x.csv --speed " + repeated('9', 50000) + "x", 2,
-         says({"mhbench simulate: --speed = '9999999999999999999999999999999999999...' (50001 characters) is not "
+         stderr_says({"mhbench simulate: --speed = '9999999999999999999999999999999999999...' (50001 characters) is not "
                "a finite number"})},
         {"", "simulate --out x.csv --bogus", 2,
-         says({"mhbench simulate: unrecognised option '--bogus' (see mhbench simulate --help)"})},
+         stderr_says({"mhbench simulate: unrecognised option '--bogus' (see mhbench simulate --help)"})},
         {"echo x > file", "simulate --samples 5 --out file/x.csv", 1,
-         says({"mhbench simulate: file/x.csv: cannot be written (Not a directory)"})},
-        {"mkdir d", "simulate --samples 5 --out d", 1, says({"mhbench simulate: d: cannot be written (Is a directory)"})},
+         stderr_says({"mhbench simulate: file/x.csv: cannot be written (Not a directory)"})},
+        {"mkdir d", "simulate --samples 5 --out d", 1, stderr_says({"mhbench simulate: d: cannot be written (Is a directory)"})},
         {"", "simulate --samples 5 --out /sys/mhbench-test.csv", 1,
          one_line("mhbench simulate: /sys/mhbench-test.csv: cannot be written (")}, // EACCES here, EROFS in some containers
         {"", "simulate --samples 5 --out /dev/full", 1,
-         says({"mhbench simulate: /dev/full: cannot be written (No space left on device)"})},
+         stderr_says({"mhbench simulate: /dev/full: cannot be written (No space left on device)"})},
         {"", "(trap '' XFSZ; ulimit -f 1; mhbench simulate --samples 50 --out x.csv)", 1,
-         says({"mhbench simulate: x.csv: cannot be written (File too large)"})},
+         stderr_says({"mhbench simulate: x.csv: cannot be written (File too large)"})},
 
         // ---- identify: options and dataset CSVs
-        {"", "identify", 2, says({"mhbench identify: --data FILE is required (see mhbench identify --help)"})},
+        {"", "identify", 2, stderr_says({"mhbench identify: --data FILE is required (see mhbench identify --help)"})},
         {"", "identify --data none.csv", 1,
-         says({"mhbench identify: none.csv: cannot open the dataset file (No such file or directory)"})},
-        {"mkdir d.csv", "identify --data d.csv", 1, says({"mhbench identify: d.csv: is a directory, not a dataset file"})},
+         stderr_says({"mhbench identify: none.csv: cannot open the dataset file (No such file or directory)"})},
+        {"mkdir d.csv", "identify --data d.csv", 1, stderr_says({"mhbench identify: d.csv: is a directory, not a dataset file"})},
         {"cp $F/good.csv d.csv", "identify --data d.csv --weights 1,2,x,4", 2,
-         says({"mhbench identify: --weights '1,2,x,4': 'x' is not a number >= 0"})},
+         stderr_says({"mhbench identify: --weights '1,2,x,4': 'x' is not a number >= 0"})},
         {"cp $F/good.csv d.csv", "identify --data d.csv --weights 1,2,3", 2,
-         says({"mhbench identify: --weights '1,2,3' needs four numbers w1,w2,w3,w4"})},
+         stderr_says({"mhbench identify: --weights '1,2,3' needs four numbers w1,w2,w3,w4"})},
         {"cp $F/good.csv d.csv", "identify --data d.csv --weights 0,0,0,0", 2,
-         says({"mhbench identify: --weights '0,0,0,0': all four are zero, which leaves nothing to fit; give at "
+         stderr_says({"mhbench identify: --weights '0,0,0,0': all four are zero, which leaves nothing to fit; give at "
                "least one > 0"})},
         {"cp $F/good.csv d.csv", "identify --data d.csv --id-threshold 0", 2,
-         says({"mhbench identify: --id-threshold = 0 is not a number > 0"})},
-        {"printf '\\357\\273\\277' > d.csv && cat $F/good.csv >> d.csv", "identify --data d.csv", 0, says({})},
+         stderr_says({"mhbench identify: --id-threshold = 0 is not a number > 0"})},
+        {"printf '\\357\\273\\277' > d.csv && cat $F/good.csv >> d.csv", "identify --data d.csv", 0, stderr_says({})},
         {"printf '\\357\\273\\277t,ud,uq,id,iq,omega,injected\\n' > d.csv && grep -v '^[#t]' $F/good.csv >> d.csv",
-         "identify --data d.csv", 0, says({})},
+         "identify --data d.csv", 0, stderr_says({})},
         {dataset_with("5s/^[^,]*,[^,]*/0,x/"), "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 5, column 'ud': 'x' is not a number"})},
+         stderr_says({"mhbench identify: d.csv: line 5, column 'ud': 'x' is not a number"})},
         {dataset_with("5s/^[^,]*,[^,]*/0,nan/"), "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 5, column 'ud': 'nan' is not finite (NaN or infinity)"})},
+         stderr_says({"mhbench identify: d.csv: line 5, column 'ud': 'nan' is not finite (NaN or infinity)"})},
         {dataset_with("5s/^[^,]*,[^,]*/0,-inf/"), "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 5, column 'ud': '-inf' is not finite (NaN or infinity)"})},
+         stderr_says({"mhbench identify: d.csv: line 5, column 'ud': '-inf' is not finite (NaN or infinity)"})},
         {dataset_with("5s/^[^,]*,[^,]*/0,1e300/"), "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 5, column 'ud': 1e300 is outside [-1e9, 1e9] (the range of a "
+         stderr_says({"mhbench identify: d.csv: line 5, column 'ud': 1e300 is outside [-1e9, 1e9] (the range of a "
                "dataset value; larger ones would overflow the fit)"})},
         {dataset_with("5s/^[^,]*,[^,]*/0,1e400/"), "identify --data d.csv", 1,
          one_line("d.csv: line 5, column 'ud': 1e400 is outside [-1e9, 1e9]")},
@@ -273,77 +273,77 @@ std::vector<BadInput> catalogue() {
          one_line("d.csv: line 5, column 'injected': '-2e9' is not 0 or 1")},
         {"(head -n 4 $F/good.csv; printf '0,'; head -c 1048576 /dev/zero | tr '\\0' 7; printf 'x,';"
          " sed -n 5p $F/good.csv | cut -d, -f3-; tail -n +6 $F/good.csv) > d.csv", "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 5, column 'ud': '7777777777777777777777777777777777777...' "
+         stderr_says({"mhbench identify: d.csv: line 5, column 'ud': '7777777777777777777777777777777777777...' "
                "(1048577 characters) is not a number"})},
         {dataset_with("s/^t,ud,/t,vd,/"), "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 1, column 2: unknown column 'vd' (expected "
+         stderr_says({"mhbench identify: d.csv: line 1, column 2: unknown column 'vd' (expected "
                "t,ud,uq,id,iq,omega[,injected])"})},
         {dataset_with("s/^t,ud,uq,/t,ud,ud,/"), "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 1, column 3: column 'ud' appears twice"})},
+         stderr_says({"mhbench identify: d.csv: line 1, column 3: column 'ud' appears twice"})},
         {dataset_with("s/^t,ud,uq,id,iq,omega,injected/t,ud,uq,id,iq,injected/"), "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 1, column 'omega' is missing from the header (expected "
+         stderr_says({"mhbench identify: d.csv: line 1, column 'omega' is missing from the header (expected "
                "t,ud,uq,id,iq,omega[,injected])"})},
         {dataset_with("6s/,[^,]*$//"), "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 6, row has 6 fields but the header has 7 columns"})},
+         stderr_says({"mhbench identify: d.csv: line 6, row has 6 fields but the header has 7 columns"})},
         {dataset_with("7s/,[01]$/,2/"), "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 7, column 'injected': '2' is not 0 or 1"})},
+         stderr_says({"mhbench identify: d.csv: line 7, column 'injected': '2' is not 0 or 1"})},
         {dataset_with("8s/^/# late=1\\n/"), "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 8, metadata line after the header"})},
+         stderr_says({"mhbench identify: d.csv: line 8, metadata line after the header"})},
         {"head -n 3 $F/good.csv > d.csv", "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: line 3, too few rows: 2 data rows, at least 4 needed"})},
+         stderr_says({"mhbench identify: d.csv: line 3, too few rows: 2 data rows, at least 4 needed"})},
         // Data that cannot determine every parameter get verdicts, not an error
         // (tests/integration/identify_verdicts_test.cpp checks what they say).
-        {"grep -v ',1$' $F/good.csv > d.csv", "identify --data d.csv", 0, says({})},
+        {"grep -v ',1$' $F/good.csv > d.csv", "identify --data d.csv", 0, stderr_says({})},
         {": > d.csv", "identify --data d.csv", 1,
-         says({"mhbench identify: d.csv: no header line (expected t,ud,uq,id,iq,omega[,injected])"})},
+         stderr_says({"mhbench identify: d.csv: no header line (expected t,ud,uq,id,iq,omega[,injected])"})},
         {"(grep -v ',[01]$' $F/good.csv; grep ',0$' $F/good.csv | head -n 1; grep ',1$' $F/good.csv | head -n 3) > d.csv",
-         "identify --data d.csv", 0, says({})},
-        {dataset_with("s/,[^,]*,\\([01]\\)$/,0,\\1/"), "identify --data d.csv", 0, says({})},
+         "identify --data d.csv", 0, stderr_says({})},
+        {dataset_with("s/,[^,]*,\\([01]\\)$/,0,\\1/"), "identify --data d.csv", 0, stderr_says({})},
 
         // ---- eval and points files
         {"", "eval --problem sphere:dim=2", 2, one_line("--points")},
         {"", "eval --problem nope --points p.txt", 2, one_line("mhbench eval: unknown problem 'nope'; known: ")},
         {"echo '1 2' > p.txt", "eval --problem bbob:f=25,dim=2 --points p.txt", 2,
-         says({"mhbench eval: bbob: parameter 'f' = 25 is outside [1, 24]"})},
+         stderr_says({"mhbench eval: bbob: parameter 'f' = 25 is outside [1, 24]"})},
         {"", "eval --problem sphere:dim=2 --points none.txt", 1, one_line("none.txt: cannot be")},
-        {"mkdir p", "eval --problem sphere:dim=2 --points p", 1, says({"mhbench eval: p: cannot be read (Is a directory)"})},
+        {"mkdir p", "eval --problem sphere:dim=2 --points p", 1, stderr_says({"mhbench eval: p: cannot be read (Is a directory)"})},
         {"printf '1 2\\n1 2 3\\n' > p.txt", "eval --problem sphere:dim=2 --points p.txt", 1,
-         says({"mhbench eval: p.txt, line 2: 3 coordinates, but the problem has 2 dimensions"})},
+         stderr_says({"mhbench eval: p.txt, line 2: 3 coordinates, but the problem has 2 dimensions"})},
         {"printf '1,2\\n0.5,abc\\n' > p.txt", "eval --problem sphere:dim=2 --points p.txt", 1,
-         says({"mhbench eval: p.txt, line 2, column 5 (coordinate 2): 'abc' is not a finite number"})},
+         stderr_says({"mhbench eval: p.txt, line 2, column 5 (coordinate 2): 'abc' is not a finite number"})},
         {"printf '1 nan\\n' > p.txt", "eval --problem sphere:dim=2 --points p.txt", 1,
-         says({"mhbench eval: p.txt, line 1, column 3 (coordinate 2): 'nan' is not a finite number"})},
+         stderr_says({"mhbench eval: p.txt, line 1, column 3 (coordinate 2): 'nan' is not a finite number"})},
         {"(printf '1 '; head -c 1048576 /dev/zero | tr '\\0' 5; echo x) > p.txt",
          "eval --problem sphere:dim=2 --points p.txt", 1,
-         says({"mhbench eval: p.txt, line 1, column 3 (coordinate 2): '5555555555555555555555555555555555555...' "
+         stderr_says({"mhbench eval: p.txt, line 1, column 3 (coordinate 2): '5555555555555555555555555555555555555...' "
                "(1048577 characters) is not a finite number"})},
-        {"printf '\\357\\273\\2771 2\\n' > p.txt", "eval --problem sphere:dim=2 --points p.txt", 0, says({})},
+        {"printf '\\357\\273\\2771 2\\n' > p.txt", "eval --problem sphere:dim=2 --points p.txt", 0, stderr_says({})},
         // An in-box point where |x| products overflow: +inf is a legal value, never NaN.
         {"echo $(yes 1e11 | head -n 30) > p.txt",
-         "eval --problem schwefel_2_22:dim=30,bound=1e12 --points p.txt", 0, says({})},
-        {"", "eval --problem sphere:dim=2 --points - < /dev/null", 0, says({})},
+         "eval --problem schwefel_2_22:dim=30,bound=1e12 --points p.txt", 0, stderr_says({})},
+        {"", "eval --problem sphere:dim=2 --points - < /dev/null", 0, stderr_says({})},
 
         // ---- plugin-check
         {"", "plugin-check", 2,
-         says({"mhbench plugin-check: give --algorithm SPEC, --problem SPEC or both (see mhbench plugin-check --help)"})},
+         stderr_says({"mhbench plugin-check: give --algorithm SPEC, --problem SPEC or both (see mhbench plugin-check --help)"})},
         {"", "plugin-check --algorithm nope", 2, one_line("mhbench plugin-check: unknown algorithm 'nope'; known: ")},
         {"", "plugin-check --problem sphere:dim=2 --runs 0", 2,
-         says({"mhbench plugin-check: --runs = 0 is outside [1, 1000]"})},
+         stderr_says({"mhbench plugin-check: --runs = 0 is outside [1, 1000]"})},
 
         // ---- report and study directories
-        {"", "report", 2, says({"mhbench report: give the study directory (mhbench report DIR; see --help)"})},
-        {"", "report nowhere", 1, says({"mhbench report: nowhere: is not a directory"})},
+        {"", "report", 2, stderr_says({"mhbench report: give the study directory (mhbench report DIR; see --help)"})},
+        {"", "report nowhere", 1, stderr_says({"mhbench report: nowhere: is not a directory"})},
         {"mkdir d && echo mine > d/notes.txt", "report d", 1,
-         says({"mhbench report: d: is not a mhbench study directory (no .mhbench-study, study.ini or runs.csv)"})},
+         stderr_says({"mhbench report: d: is not a mhbench study directory (no .mhbench-study, study.ini or runs.csv)"})},
         {study_copy + " && rm s/runs.csv", "report s", 1,
-         says({"mhbench report: s: holds an unfinished study (no runs.csv yet); run the same command again to "
+         stderr_says({"mhbench report: s: holds an unfinished study (no runs.csv yet); run the same command again to "
                "complete it"})},
         {old_study_copy + " && head -c -7 $F/study/runs.csv > s/runs.csv", "report s --no-figures", 1, one_line("s/runs.csv, line ")},
         {old_study_copy + " && sed -i '2s/,ok,/,maybe,/' s/runs.csv", "report s --no-figures", 1, one_line("s/runs.csv")},
         {old_study_copy + " && sed -i '2s/^0,/zero,/' s/runs.csv", "report s --no-figures", 1,
-         says({"mhbench report: s/runs.csv, line 2, column 'run_id': 'zero' is not an integer"})},
+         stderr_says({"mhbench report: s/runs.csv, line 2, column 'run_id': 'zero' is not an integer"})},
         {old_study_copy + " && head -n 1 $F/study/runs.csv > s/runs.csv", "report s --no-figures", 1,
-         says({"mhbench report: s/runs.csv: has 0 rows, but the study it was rendered for has 2 runs"})},
+         stderr_says({"mhbench report: s/runs.csv: has 0 rows, but the study it was rendered for has 2 runs"})},
         // a rendered file that is not what the study wrote (a crash of the machine): refused
         {study_copy + " && sed -i '2s/^0,/zero,/' s/runs.csv", "report s --no-figures", 1,
          one_line("s/runs.csv: is not the file the study wrote (")},
@@ -354,24 +354,24 @@ std::vector<BadInput> catalogue() {
         {study_copy + " && echo '# edited' >> s/study.ini", "report s --no-figures", 1,
          one_line("s/runs.csv: was rendered for another study.ini than the one beside it (crc32c ")},
         {old_study_copy + " && sed -i '$d' s/runs.csv", "report s --no-figures", 1,
-         says({"mhbench report: s/runs.csv: has 1 row, but the study it was rendered for has 2 runs"})},
+         stderr_says({"mhbench report: s/runs.csv: has 1 row, but the study it was rendered for has 2 runs"})},
         // an error inside finish() leaves no .tmp file (issue 22)
         {study_copy + " && rm s/runs.csv && mkdir s/runs.csv",
          "run --study smoke --runs 2 --evaluations 200 --no-report --quiet --out s", 1,
          one_line("s/runs.csv: cannot be written ("), "s"},
         {study_copy + " && rm s/context.ini", "report s --no-figures", 1,
-         says({"mhbench report: s/context.ini: cannot be read (No such file or directory)"})},
+         stderr_says({"mhbench report: s/context.ini: cannot be read (No such file or directory)"})},
         {study_copy + " && rm s/study.ini && mkdir s/study.ini", "report s --no-figures", 1,
-         says({"mhbench report: s/study.ini: cannot be read (Is a directory)"})},
-        {study_copy, "report s --alpha 0 --no-figures", 2, says({"mhbench report: --alpha = 0 is outside (0, 1)"})},
+         stderr_says({"mhbench report: s/study.ini: cannot be read (Is a directory)"})},
+        {study_copy, "report s --alpha 0 --no-figures", 2, stderr_says({"mhbench report: --alpha = 0 is outside (0, 1)"})},
         {study_copy, "report s --reference cmaes --no-figures", 2, one_line("the study has: ")},
         {study_copy, "report s --format pdf --no-figures", 2,
-         says({"mhbench report: --format: 'pdf' is not one of md, tex, csv"})},
+         stderr_says({"mhbench report: --format: 'pdf' is not one of md, tex, csv"})},
         {study_copy, "report s --ioh-precision 12 --no-figures", 2,
-         says({"mhbench report: --ioh-precision '12' is not one of ioh, full"})},
-        {study_copy, "report s --bogus", 2, says({"mhbench report: unrecognised option '--bogus' (see mhbench report --help)"})},
+         stderr_says({"mhbench report: --ioh-precision '12' is not one of ioh, full"})},
+        {study_copy, "report s --bogus", 2, stderr_says({"mhbench report: unrecognised option '--bogus' (see mhbench report --help)"})},
         {study_copy, "report s --out s --no-figures", 1,
-         says({"mhbench report: --out s is a study directory, and a report would replace its records; leave "
+         stderr_says({"mhbench report: --out s is a study directory, and a report would replace its records; leave "
                "--out out (the report goes to DIR/report) or name a directory of its own"})},
         {study_copy + " && mkdir t && cp s/.mhbench-study t/", "report s --out t --no-figures", 1,
          one_line("mhbench report: --out t is a study directory")},
@@ -380,17 +380,17 @@ std::vector<BadInput> catalogue() {
         {study_copy + " && printf 'command = mhbench run\\npid = 1234\\nhost = node7\\nsince = 2026-11-26 "
                       "07:55:01 UTC\\n' > s/.mhbench.lock",
          "(exec 9<s/.mhbench.lock && flock -n 9 && mhbench report s --no-figures)", 1,
-         says({"mhbench report: s is in use by mhbench run (pid 1234 on host node7, since 2026-11-26 07:55:01 "
+         stderr_says({"mhbench report: s is in use by mhbench run (pid 1234 on host node7, since 2026-11-26 07:55:01 "
                "UTC); wait for it, or give --out a directory outside the study"})},
         {study_copy + " && printf 'command = mhbench run\\npid = 1234\\nhost = node7\\nsince = 2026-11-26 "
                       "07:55:01 UTC\\n' > s/.mhbench.lock",
          "(exec 9<s/.mhbench.lock && flock -n 9 && mhbench run --algorithms random-search" + tiny_run + ")", 1,
-         says({"mhbench run: s is in use by mhbench run (pid 1234 on host node7, since 2026-11-26 07:55:01 "
+         stderr_says({"mhbench run: s is in use by mhbench run (pid 1234 on host node7, since 2026-11-26 07:55:01 "
                "UTC); wait for it or use another --out"})},
         {"M='" MHB_CLI_PATH "'; for i in 1 2; do $M run --algorithms random-search --problems sphere:dim=2 "
          "--runs 2 --evaluations 100 --quiet --shard $i/2 --out $i || exit 1; done; mkdir o && : > o/.mhbench.lock",
          "(exec 9<o/.mhbench.lock && flock -n 9 && mhbench merge o 1 2 --no-report)", 1,
-         says({"mhbench merge: o is in use by another mhbench process; wait for it or choose another OUT"})},
+         stderr_says({"mhbench merge: o is in use by another mhbench process; wait for it or choose another OUT"})},
         {study_copy + " && echo x > file", "report s --no-figures --out file/r", 1, one_line("file/r")},
         {study_copy, "(trap '' XFSZ; ulimit -f 1; mhbench report s --no-figures)", 1,
          one_line(": cannot be written (File too large)")},
@@ -400,8 +400,8 @@ std::vector<BadInput> catalogue() {
          mentions("/drive.csv: sha256 ")}, // the file and both hashes (tests/integration/shards_test.cpp)
 
         // ---- list
-        {"", "list nothing", 2, says({"mhbench list: unknown list 'nothing'; known: algorithms, problems, studies"})},
-        {"", "list --bogus", 2, says({"mhbench list: unrecognised option '--bogus' (see mhbench list --help)"})},
+        {"", "list nothing", 2, stderr_says({"mhbench list: unknown list 'nothing'; known: algorithms, problems, studies"})},
+        {"", "list --bogus", 2, stderr_says({"mhbench list: unrecognised option '--bogus' (see mhbench list --help)"})},
         {"", "list algorithms problems", 2, one_line("mhbench list: ")},
     };
 }
@@ -409,7 +409,7 @@ std::vector<BadInput> catalogue() {
 
 // Launchers of several processes, refused by an mhbench built without MPI (an MPI build makes
 // them ranks: tests/mpi/). Single-task jobs of a scheduler run as usual.
-std::vector<BadInput> launcher_catalogue() {
+std::vector<BadInputCase> launcher_catalogue() {
     const std::string refusal =
         "mhbench run: this mhbench was built without MPI, yet a launcher started it as one of ";
     const std::string advice =
@@ -418,32 +418,33 @@ std::vector<BadInput> launcher_catalogue() {
     const std::string run = "mhbench run --algorithms random-search" + tiny_run;
     return {
         {"", "(export SLURM_STEP_NUM_TASKS=4 SLURM_NTASKS=4 SLURM_PROCID=0; " + run + ")", 1,
-         says({refusal + "4 processes (SLURM_STEP_NUM_TASKS=4), " + advice})},
+         stderr_says({refusal + "4 processes (SLURM_STEP_NUM_TASKS=4), " + advice})},
         {"", "(export SLURM_PROCID=3; " + run + ")", 1,
-         says({refusal + "at least 4 processes (SLURM_PROCID=3), " + advice})},
+         stderr_says({refusal + "at least 4 processes (SLURM_PROCID=3), " + advice})},
         {"", "(export PMIX_RANK=1; " + run + ")", 1,
-         says({refusal + "at least 2 processes (PMIX_RANK=1), " + advice})},
+         stderr_says({refusal + "at least 2 processes (PMIX_RANK=1), " + advice})},
         {"", "(export PMI_SIZE=2 PMI_RANK=0; " + run + ")", 1,
-         says({refusal + "2 processes (PMI_SIZE=2), " + advice})},
+         stderr_says({refusal + "2 processes (PMI_SIZE=2), " + advice})},
         {"", "(export OMPI_COMM_WORLD_SIZE=2; " + run + " --quiet)", 1,
-         says({refusal + "2 processes (OMPI_COMM_WORLD_SIZE=2), " + advice})},
+         stderr_says({refusal + "2 processes (OMPI_COMM_WORLD_SIZE=2), " + advice})},
         // sbatch -n 4's batch script, a job-array task: one process each
-        {"", "(export SLURM_NTASKS=4 SLURM_PROCID=0 SLURM_JOB_ID=9; " + run + " --quiet)", 0, says({}), "s"},
-        {"", "(export SLURM_ARRAY_TASK_ID=2 SLURM_NTASKS=1 SLURM_PROCID=0; " + run + " --quiet)", 0, says({}),
+        {"", "(export SLURM_NTASKS=4 SLURM_PROCID=0 SLURM_JOB_ID=9; " + run + " --quiet)", 0, stderr_says({}),
          "s"},
+        {"", "(export SLURM_ARRAY_TASK_ID=2 SLURM_NTASKS=1 SLURM_PROCID=0; " + run + " --quiet)", 0,
+         stderr_says({}), "s"},
     };
 }
 
-std::vector<BadInput> every_case() {
-    std::vector<BadInput> cases = catalogue();
+std::vector<BadInputCase> every_case() {
+    std::vector<BadInputCase> cases = catalogue();
     if (!mhb::built_with_mpi())
-        for (BadInput& c : launcher_catalogue())
+        for (BadInputCase& c : launcher_catalogue())
             cases.push_back(std::move(c));
     return cases;
 }
 
-const fs::path work = mhb::testing_cli::scratch_directory() / "bad_inputs";
-const fs::path fixtures = work / "fixtures";
+const fs::path bad_inputs_work = mhb::testing_cli::scratch_directory() / "bad_inputs";
+const fs::path fixtures = bad_inputs_work / "fixtures";
 
 // Every file under `dir` (relative path -> content), directories as entries of their own.
 std::map<std::string, std::string> tree(const fs::path& dir) {
@@ -462,7 +463,7 @@ std::map<std::string, std::string> tree(const fs::path& dir) {
 class BadInputs : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        fs::remove_all(work);
+        fs::remove_all(bad_inputs_work);
         fs::create_directories(fixtures);
         const std::string cli = std::string("'") + MHB_CLI_PATH + "'";
         const CliResult dataset =
@@ -490,8 +491,8 @@ TEST_F(BadInputs, EveryCaseGivesItsExitCodeAndMessageAndWritesNothing) {
     std::cout << "[ catalogue] " << cases.size() << " cases\n";
     const std::string cli = std::string("'") + MHB_CLI_PATH + "'";
     for (std::size_t k = 0; k < cases.size(); ++k) {
-        const BadInput& c = cases[k];
-        const fs::path dir = work / ("case_" + std::to_string(k));
+        const BadInputCase& c = cases[k];
+        const fs::path dir = bad_inputs_work / ("case_" + std::to_string(k));
         fs::remove_all(dir);
         fs::create_directories(dir);
         const std::string prefix = "cd '" + dir.string() + "' && F='" + fixtures.string() + "' && ";

@@ -40,6 +40,20 @@ inline std::filesystem::path scratch_directory() {
     return dir;
 }
 
+// `name` in the scratch directory, removed if it was there.
+inline std::filesystem::path fresh(const std::string& name) {
+    const auto dir = scratch_directory() / name;
+    std::filesystem::remove_all(dir);
+    return dir;
+}
+
+// A path in single quotes for the shell (paths with a quote in them are not supported).
+inline std::string shell_quoted(const std::filesystem::path& path) {
+    std::string out = "'"; // appended, not `"'" + ...`: GCC 12 warns (-Wrestrict) on that falsely
+    out += path.string();
+    return out += '\'';
+}
+
 // Runs a shell command line and collects what it printed.
 inline CliResult run_shell(const std::string& command) {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();

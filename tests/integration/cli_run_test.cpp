@@ -40,25 +40,20 @@ std::string known_study_names() {
 }
 namespace fs = std::filesystem;
 
-const fs::path work = mhb::testing_cli::scratch_directory();
+const fs::path cli_run_work = mhb::testing_cli::scratch_directory();
 
+using mhb::testing_cli::fresh;
 using mhb::testing_cli::lines_of;
 using mhb::testing_cli::read_text;
 using mhb::testing_cli::scratch_directory;
-using Result = mhb::testing_cli::CliResult;
+using CliRunResult = mhb::testing_cli::CliResult;
 using mhb::testing_cli::run_shell;
 
-Result mhbench(const std::string& args) {
+CliRunResult mhbench(const std::string& args) {
     return mhb::testing_cli::run_mhbench(args);
 }
 
-fs::path fresh(const std::string& name) {
-    const fs::path dir = work / name;
-    fs::remove_all(dir);
-    return dir;
-}
-
-const std::string small_study =
+const std::string small_study_options =
     "--algorithms \"random-search random-search:batch=20\" --problems sphere:dim=3 "
     "--problem sphere:dim=5,bound=2 --runs 4 --iterations 30 --evaluations 500 --seed 9";
 
@@ -68,9 +63,11 @@ const char* const deterministic_files[] = {"runs.csv",         "curves.csv",    
 TEST(CliRun, OneAndTwoThreadsGiveByteIdenticalResults) {
     const fs::path one = fresh("threads1");
     const fs::path two = fresh("threads2");
-    const Result a = mhbench("run " + small_study + " --no-report --threads 1 --out " + one.string());
+    const CliRunResult a =
+        mhbench("run " + small_study_options + " --no-report --threads 1 --out " + one.string());
     ASSERT_EQ(a.exit_code, 0) << a.err;
-    const Result b = mhbench("run " + small_study + " --no-report --threads 2 --out " + two.string());
+    const CliRunResult b =
+        mhbench("run " + small_study_options + " --no-report --threads 2 --out " + two.string());
     ASSERT_EQ(b.exit_code, 0) << b.err;
     for (const char* name : deterministic_files)
         EXPECT_EQ(read_text(one / name), read_text(two / name)) << name;
@@ -90,10 +87,11 @@ TEST(CliRun, StudyFileRunsTheSameStudyAgain) {
     const fs::path first = fresh("original");
     const fs::path again = fresh("from_file");
     ASSERT_EQ(
-        mhbench("run " + small_study + " --no-report --threads 2 --quiet --out " + first.string()).exit_code,
+        mhbench("run " + small_study_options + " --no-report --threads 2 --quiet --out " + first.string())
+            .exit_code,
         0);
-    const Result r = mhbench("run --no-report --study-file " + (first / "study.ini").string() +
-                             " --threads 1 --quiet --out " + again.string());
+    const CliRunResult r = mhbench("run --no-report --study-file " + (first / "study.ini").string() +
+                                   " --threads 1 --quiet --out " + again.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.out, ""); // --quiet
     for (const char* name : deterministic_files)
@@ -109,7 +107,7 @@ TEST(CliRun, StudyFileRunsTheSameStudyAgain) {
 
 TEST(CliRun, PresetsRunAndOptionsOverrideThem) {
     const fs::path dir = fresh("smoke");
-    const Result r =
+    const CliRunResult r =
         mhbench("run --study smoke --runs 3 --evaluations 200 --no-report --quiet --out " + dir.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string ini = read_text(dir / "study.ini");
@@ -122,10 +120,11 @@ TEST(CliRun, PresetsRunAndOptionsOverrideThem) {
 
 TEST(CliRun, DryRunPrintsTheExpandedStudyAndItsCostAndRunsNothing) {
     const fs::path dir = fresh("dry");
-    const Result r = mhbench("run --algorithms 'itlbo:tutorial={on,off},obl={on,off}' tlbo --problems "
-                             "'sphere:dim={2,3}' --budget evaluations=300 --budget iterations=4 --runs 5 "
-                             "--dry-run --threads 2 --out " +
-                             dir.string());
+    const CliRunResult r =
+        mhbench("run --algorithms 'itlbo:tutorial={on,off},obl={on,off}' tlbo --problems "
+                "'sphere:dim={2,3}' --budget evaluations=300 --budget iterations=4 --runs 5 "
+                "--dry-run --threads 2 --out " +
+                dir.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_FALSE(fs::exists(dir));
     const auto has = [&](const std::string& text) { return r.out.find(text) != std::string::npos; };
@@ -149,7 +148,7 @@ TEST(CliRun, StudyFileAndCommandLineErrorsAreReportedTogetherWithFileAndLine) {
                            "runs = many\n"
                            "threads = 4\n"
                            "budget = iterations=10\n";
-    const Result r = mhbench("run --study-file " + file.string() + " --seeds sometimes --dry-run");
+    const CliRunResult r = mhbench("run --study-file " + file.string() + " --seeds sometimes --dry-run");
     EXPECT_EQ(r.exit_code, 2);
     const std::string f = file.string();
     EXPECT_EQ(lines_of(r.err),
@@ -170,15 +169,15 @@ TEST(CliRun, StudyFileAndCommandLineErrorsAreReportedTogetherWithFileAndLine) {
 }
 
 // Each case: the arguments, and the error lines expected on stderr (exactly, in order).
-struct BadInput {
+struct BadRunArguments {
     std::string args;
     std::vector<std::string> errors;
 };
 
 TEST(CliRun, BadInputGivesOneLinePerErrorNonZeroExitAndNoRunsCsv) {
-    fs::create_directories(work);
-    std::ofstream(work / "a_file") << "not a directory\n";
-    const std::vector<BadInput> cases = {
+    fs::create_directories(cli_run_work);
+    std::ofstream(cli_run_work / "a_file") << "not a directory\n";
+    const std::vector<BadRunArguments> cases = {
         {"--algorithms nope --problems sphere --iterations 5",
          {"mhbench run: unknown algorithm 'nope'; known: " + known_algorithm_names()}},
         {"--algorithms random-search --problems nope --iterations 5",
@@ -195,8 +194,8 @@ TEST(CliRun, BadInputGivesOneLinePerErrorNonZeroExitAndNoRunsCsv) {
          {"mhbench run: runs = 2.5 is not an integer", "mhbench run: evaluations = lots is not an integer"}},
         {"--study nope", {"mhbench run: unknown study 'nope'; known: " + known_study_names()}},
         {"--algorithms random-search --problems sphere --iterations 5 --out " +
-             (work / "a_file" / "sub").string(),
-         {"mhbench run: " + (work / "a_file" / "sub").string() +
+             (cli_run_work / "a_file" / "sub").string(),
+         {"mhbench run: " + (cli_run_work / "a_file" / "sub").string() +
           ": cannot create the output directory (Not a directory)"}},
         {"--algorithms random-search --problems sphere --iterations 5 --bogus",
          {"mhbench run: unrecognised option '--bogus' (see mhbench run --help)"}},
@@ -204,7 +203,7 @@ TEST(CliRun, BadInputGivesOneLinePerErrorNonZeroExitAndNoRunsCsv) {
     for (const auto& c : cases) {
         const fs::path dir = fresh("bad");
         const bool has_out = c.args.find("--out") != std::string::npos;
-        const Result r = mhbench("run " + c.args + (has_out ? "" : " --out " + dir.string()));
+        const CliRunResult r = mhbench("run " + c.args + (has_out ? "" : " --out " + dir.string()));
         EXPECT_NE(r.exit_code, 0) << c.args;
         EXPECT_EQ(lines_of(r.err), c.errors) << c.args;
         EXPECT_FALSE(fs::exists(dir / "runs.csv")) << c.args;
@@ -219,7 +218,7 @@ TEST(CliRun, AFinishedStudyRefusesAChangedSeedUnlessOverwriteIsGiven) {
         dir.string();
     ASSERT_EQ(mhbench(args).exit_code, 0);
     const std::string runs = read_text(dir / "runs.csv");
-    const Result again = mhbench(args + " --seed 5");
+    const CliRunResult again = mhbench(args + " --seed 5");
     EXPECT_NE(again.exit_code, 0);
     EXPECT_EQ(lines_of(again.err),
               (std::vector<std::string>{
@@ -240,7 +239,7 @@ TEST(CliRun, AnExtendedStudyKeepsTheHistoryOfItsSessions) {
     const std::string args = "run --algorithms random-search --problems sphere:dim=2 --iterations 3 --out " +
                              dir.string() + " --no-figures --quiet --runs ";
     ASSERT_EQ(mhbench(args + "2").exit_code, 0);
-    const Result extended = mhbench(args + "3");
+    const CliRunResult extended = mhbench(args + "3");
     ASSERT_EQ(extended.exit_code, 0) << extended.err;
     const std::string context = read_text(dir / "context.ini");
     std::vector<std::string> sessions;
@@ -280,7 +279,7 @@ TEST(CliRun, InterruptKeepsFinishedRunsAndTheSameCommandResumes) {
         // "interrupted: K of 1000 runs kept in DIR; run the same command again to resume"
         return std::stoll(err.substr(err.find(':') + 2));
     };
-    const Result first = run_shell(interrupt);
+    const CliRunResult first = run_shell(interrupt);
     EXPECT_EQ(first.exit_code, 130) << first.err;
     EXPECT_EQ(lines_of(first.err),
               std::vector<std::string>{"interrupted: " + std::to_string(kept_of(first.err)) +
@@ -291,7 +290,7 @@ TEST(CliRun, InterruptKeepsFinishedRunsAndTheSameCommandResumes) {
     EXPECT_TRUE(fs::exists(dir / "store.bin"));
 
     // The same command again picks up where it stopped: the count only grows.
-    const Result second = run_shell(interrupt);
+    const CliRunResult second = run_shell(interrupt);
     EXPECT_EQ(second.exit_code, 130) << second.err;
     EXPECT_GE(kept_of(second.err), kept_of(first.err) + 1);
     EXPECT_FALSE(fs::exists(dir / "runs.csv"));
@@ -299,7 +298,7 @@ TEST(CliRun, InterruptKeepsFinishedRunsAndTheSameCommandResumes) {
 }
 
 TEST(CliList, ListsRandomSearchWithItsParameter) {
-    const Result r = mhbench("list algorithms");
+    const CliRunResult r = mhbench("list algorithms");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("random-search"), std::string::npos);
     EXPECT_NE(r.out.find("Brooks (1958)"), std::string::npos);
@@ -318,12 +317,12 @@ TEST(CliList, ListsRandomSearchWithItsParameter) {
               std::string::npos)
         << r.out;
 
-    const Result all = mhbench("list");
+    const CliRunResult all = mhbench("list");
     ASSERT_EQ(all.exit_code, 0);
     for (const char* word : {"Algorithms", "Problems", "sphere", "Study presets", "paper", "smoke"})
         EXPECT_NE(all.out.find(word), std::string::npos) << word;
 
-    const Result bad = mhbench("list nothing");
+    const CliRunResult bad = mhbench("list nothing");
     EXPECT_NE(bad.exit_code, 0);
     EXPECT_EQ(lines_of(bad.err),
               std::vector<std::string>{
@@ -331,19 +330,19 @@ TEST(CliList, ListsRandomSearchWithItsParameter) {
 }
 
 TEST(CliHelp, EveryCommandExplainsItself) {
-    const Result top = mhbench("--help");
+    const CliRunResult top = mhbench("--help");
     EXPECT_EQ(top.exit_code, 0);
     EXPECT_NE(top.out.find("run "), std::string::npos);
     EXPECT_NE(top.out.find("list "), std::string::npos);
 
-    const Result run = mhbench("run --help");
+    const CliRunResult run = mhbench("run --help");
     EXPECT_EQ(run.exit_code, 0);
     for (const char* option : {"--algorithms", "--problems", "--runs", "--seed", "--threads", "--iterations",
                                "--evaluations", "--target", "--out", "--overwrite", "--study", "--study-file",
                                "--progress", "--quiet", "default 20", "Examples:", "paper"})
         EXPECT_NE(run.out.find(option), std::string::npos) << option;
 
-    const Result list = mhbench("list --help");
+    const CliRunResult list = mhbench("list --help");
     EXPECT_EQ(list.exit_code, 0);
     EXPECT_NE(list.out.find("mhbench list [algorithms|problems|studies]"), std::string::npos);
 }
@@ -354,7 +353,7 @@ namespace {
 
 TEST(CliRun, AStudyWhoseRunsAllFailExitsNonZeroAndSaysWhyEvenWhenQuiet) {
     const fs::path dir = fresh("all_failed");
-    const Result r =
+    const CliRunResult r =
         mhbench("run --algorithms lshade:r_ninit=1 --problems sphere:dim=2 --evaluations 100 --runs 2 "
                 "--quiet --out " +
                 dir.string());
@@ -364,7 +363,7 @@ TEST(CliRun, AStudyWhoseRunsAllFailExitsNonZeroAndSaysWhyEvenWhenQuiet) {
               std::string::npos)
         << r.err;
     // Some failed: the study and its report go on, and stderr still says so.
-    const Result some =
+    const CliRunResult some =
         mhbench("run --algorithms 'lshade:r_ninit=1 tlbo' --problems sphere:dim=2 --evaluations 100 "
                 "--runs 2 --no-report --out " +
                 fresh("some_failed").string());
@@ -379,7 +378,7 @@ TEST(CliRun, OutIntoADirectoryOfSomeoneElsesFilesIsRefusedAndTouchesNothing) {
     std::ofstream(dir / "curves.csv") << "my own curves\n";
     std::ofstream(dir / "study.ini") << "my own notes\n";
     for (const char* extra : {"", " --overwrite"}) {
-        const Result r = mhbench("run --study smoke --out " + dir.string() + extra);
+        const CliRunResult r = mhbench("run --study smoke --out " + dir.string() + extra);
         EXPECT_EQ(r.exit_code, 1) << extra;
         EXPECT_EQ(r.err,
                   "mhbench run: " + dir.string() +
@@ -397,7 +396,7 @@ TEST(CliRun, OutIntoADirectoryOfSomeoneElsesFilesIsRefusedAndTouchesNothing) {
 
 TEST(CliMain, VersionTakesNoOtherArgument) {
     EXPECT_EQ(mhbench("--version").exit_code, 0);
-    const Result r = mhbench("--version --bogus");
+    const CliRunResult r = mhbench("--version --bogus");
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_EQ(r.err, "mhbench: --version takes no other argument (got '--bogus')\n");
 }

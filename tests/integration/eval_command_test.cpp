@@ -16,14 +16,14 @@
 namespace mhb {
 namespace {
 
-struct Result {
+struct EvalResult {
     int status = 0;
     std::string out; // stdout and stderr together
 };
 
-Result run(const std::string& arguments) {
+EvalResult run(const std::string& arguments) {
     const std::string command = std::string(MHB_CLI_PATH) + " " + arguments + " 2>&1";
-    Result r;
+    EvalResult r;
     FILE* pipe = popen(command.c_str(), "r");
     if (pipe == nullptr)
         return {-1, "popen failed"};
@@ -68,8 +68,8 @@ TEST(EvalCommand, PrintsExactlyWhatTheLibraryComputesInAnotherProcess) {
         expected.push_back(problem->evaluate(x));
     }
     const auto file = temp_file("points.txt", content);
-    const Result first = run("eval --problem " + spec + " --points " + file.string());
-    const Result second = run("eval --problem " + spec + " --points " + file.string());
+    const EvalResult first = run("eval --problem " + spec + " --points " + file.string());
+    const EvalResult second = run("eval --problem " + spec + " --points " + file.string());
     ASSERT_EQ(first.status, 0) << first.out;
     EXPECT_EQ(first.out, second.out);
     EXPECT_EQ(parse_lines(first.out), expected); // bit for bit: full precision round-trips
@@ -94,7 +94,7 @@ TEST(EvalCommand, MatchesCocoReferenceValues) {
     }
     ASSERT_EQ(expected.size(), 3u);
     const auto file = temp_file("bbob.txt", points);
-    const Result r = run("eval --problem bbob:f=15,dim=10,instance=1 --points " + file.string());
+    const EvalResult r = run("eval --problem bbob:f=15,dim=10,instance=1 --points " + file.string());
     ASSERT_EQ(r.status, 0) << r.out;
     const auto got = parse_lines(r.out);
     ASSERT_EQ(got.size(), 3u);
@@ -123,7 +123,7 @@ TEST(EvalCommand, MatchesTheOfficialCecCodeOnThePublicSample) {
     ASSERT_EQ(by_problem.size(), 4u);
     for (const auto& [spec, sample] : by_problem) {
         const auto file = temp_file("cec.txt", sample.first);
-        const Result r = run("eval --problem " + spec + " --points " + file.string());
+        const EvalResult r = run("eval --problem " + spec + " --points " + file.string());
         ASSERT_EQ(r.status, 0) << spec << ": " << r.out;
         const auto got = parse_lines(r.out);
         ASSERT_EQ(got.size(), sample.second.size()) << spec;
@@ -135,7 +135,7 @@ TEST(EvalCommand, MatchesTheOfficialCecCodeOnThePublicSample) {
 
 TEST(EvalCommand, BadInputNamesFileLineAndColumn) {
     const auto wrong_count = temp_file("count.txt", "1 2\n1 2 3\n");
-    Result r = run("eval --problem sphere:dim=2 --points " + wrong_count.string());
+    EvalResult r = run("eval --problem sphere:dim=2 --points " + wrong_count.string());
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.out.find(wrong_count.string() + ", line 2: 3 coordinates, but the problem has 2 dimensions"),
               std::string::npos)

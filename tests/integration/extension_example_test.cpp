@@ -77,12 +77,7 @@ using mhb::test_support::read_text;
 using mhb::testing_cli::run_mhbench;
 using mhb::testing_cli::run_shell;
 using mhb::testing_cli::scratch_directory;
-
-std::string shell_quoted(const std::filesystem::path& path) {
-    std::string out = "'"; // appended, not `"'" + ...`: GCC 12 warns (-Wrestrict) on that falsely
-    out += path.string();
-    return out += '\'';
-}
+using mhb::testing_cli::shell_quoted;
 
 TEST(PluginPackage, ExampleBuiltAgainstTheInstalledPackageGivesTheRecordsOfTheInTreeExample) {
     const auto scratch = scratch_directory() / "package";

@@ -16,16 +16,11 @@
 namespace {
 
 namespace fs = std::filesystem;
+using mhb::testing_cli::fresh;
 using mhb::testing_cli::lines_of;
 using mhb::testing_cli::read_text;
 using mhb::testing_cli::run_mhbench;
 using mhb::testing_cli::scratch_directory;
-
-fs::path fresh(const std::string& name) {
-    const fs::path dir = scratch_directory() / name;
-    fs::remove_all(dir);
-    return dir;
-}
 
 // A spec with blanks in cmd, quoted for the shell (the quotes inside keep it one spec).
 std::string spec(const std::string& kind, const std::string& command, const std::string& options = "") {

@@ -21,7 +21,7 @@ std::string run_identify(const Dataset& data, const std::string& name, const std
     return r.out + r.err;
 }
 
-bool says(const std::string& output, const std::string& line) {
+bool output_says(const std::string& output, const std::string& line) {
     return output.find(line) != std::string::npos;
 }
 
@@ -42,22 +42,22 @@ Dataset steady_rows(double injection, double noise, std::uint64_t seed) {
 
 TEST(IdentifyVerdicts, NoInjectionLeavesLdUndetermined) {
     const std::string out = run_identify(steady_rows(0.0, 0.1, 1), "none");
-    EXPECT_TRUE(says(out, "Ld: not identifiable from this data")) << out;
-    EXPECT_TRUE(says(out, "inject a larger d-axis current")) << out;
+    EXPECT_TRUE(output_says(out, "Ld: not identifiable from this data")) << out;
+    EXPECT_TRUE(output_says(out, "inject a larger d-axis current")) << out;
     // Rs iq and psi omega are both constant: one column is a multiple of the other.
-    EXPECT_TRUE(says(out, "Rs: not identifiable from this data")) << out;
-    EXPECT_TRUE(says(out, "psi: not identifiable from this data")) << out;
-    EXPECT_TRUE(says(out, "Lq: determined")) << out;
+    EXPECT_TRUE(output_says(out, "Rs: not identifiable from this data")) << out;
+    EXPECT_TRUE(output_says(out, "psi: not identifiable from this data")) << out;
+    EXPECT_TRUE(output_says(out, "Lq: determined")) << out;
 }
 
 TEST(IdentifyVerdicts, ATinyInjectionDeterminesLdPoorly) {
     const std::string out = run_identify(steady_rows(-0.02, 0.5, 2), "tiny");
-    EXPECT_FALSE(says(out, "Ld: determined")) << out;
-    EXPECT_FALSE(says(out, "Rs: determined")) << out;
-    EXPECT_TRUE(says(out, "Lq: determined")) << out;
+    EXPECT_FALSE(output_says(out, "Ld: determined")) << out;
+    EXPECT_FALSE(output_says(out, "Rs: determined")) << out;
+    EXPECT_TRUE(output_says(out, "Lq: determined")) << out;
     // A -2 A injection with the same noise determines Ld.
     const std::string good = run_identify(steady_rows(-2.0, 0.5, 2), "normal");
-    EXPECT_TRUE(says(good, "Ld: determined")) << good;
+    EXPECT_TRUE(output_says(good, "Ld: determined")) << good;
 }
 
 // The dynamic model at one constant speed with constant currents: no di/dt, no d current, and
@@ -69,11 +69,11 @@ TEST(IdentifyVerdicts, ConstantSpeedAndCurrentsDetermineOnlyLq) {
         d.push_back(k * 1e-4, -3.24e-3 * 500 * 8 + 0.1 * rng.normal(),
                     0.33 * 8 + 0.0776 * 500 + 0.1 * rng.normal(), 0.0, 8.0, 500.0, false);
     const std::string out = run_identify(d, "constant", " --model dynamic");
-    EXPECT_TRUE(says(out, "Lq: determined")) << out;
+    EXPECT_TRUE(output_says(out, "Lq: determined")) << out;
     for (const char* p : {"Rs", "Ld", "psi"})
-        EXPECT_TRUE(says(out, std::string(p) + ": not identifiable from this data")) << out;
-    EXPECT_TRUE(says(out, "record several speeds")) << out;
-    EXPECT_TRUE(says(out, "include d-current steps")) << out;
+        EXPECT_TRUE(output_says(out, std::string(p) + ": not identifiable from this data")) << out;
+    EXPECT_TRUE(output_says(out, "record several speeds")) << out;
+    EXPECT_TRUE(output_says(out, "include d-current steps")) << out;
 }
 
 TEST(IdentifyVerdicts, NoiseOnlyDeterminesNothing) {
@@ -85,7 +85,7 @@ TEST(IdentifyVerdicts, NoiseOnlyDeterminesNothing) {
     const std::string out = run_identify(d, "noise");
     int not_identifiable = 0;
     for (const char* p : {"Rs", "Ld", "Lq", "psi"})
-        not_identifiable += says(out, std::string(p) + ": not identifiable from this data") ? 1 : 0;
+        not_identifiable += output_says(out, std::string(p) + ": not identifiable from this data") ? 1 : 0;
     EXPECT_GE(not_identifiable, 3) << out;
 }
 
@@ -96,13 +96,13 @@ TEST(IdentifyVerdicts, StandstillAndTooFewSamplesAreSaidPlainly) {
         standstill.push_back(k * 1e-4, 0.33 * (k < 20 ? 0.0 : -2.0) + 0.01 * (k % 3),
                              0.33 * 8 + 0.01 * (k % 5), k < 20 ? 0.0 : -2.0, 8.0, 0.0, k >= 20);
     const std::string out = run_identify(standstill, "standstill");
-    EXPECT_TRUE(says(out, "Rs: determined")) << out;
+    EXPECT_TRUE(output_says(out, "Rs: determined")) << out;
     for (const char* p : {"Ld", "Lq", "psi"})
-        EXPECT_TRUE(
-            says(out, std::string(p) + ": not identifiable from this data (the data leave it undetermined"))
+        EXPECT_TRUE(output_says(out, std::string(p) +
+                                         ": not identifiable from this data (the data leave it undetermined"))
             << out;
-    EXPECT_FALSE(says(out, "nan")) << out;
-    EXPECT_FALSE(says(out, "inf ")) << out;
+    EXPECT_FALSE(output_says(out, "nan")) << out;
+    EXPECT_FALSE(output_says(out, "inf ")) << out;
 
     Dataset four = steady_rows(-2.0, 0.0, 5);
     Dataset two_by_two;
@@ -110,8 +110,8 @@ TEST(IdentifyVerdicts, StandstillAndTooFewSamplesAreSaidPlainly) {
         two_by_two.push_back(four.t[k], four.ud[k], four.uq[k], four.id[k], four.iq[k], four.omega[k],
                              four.injected[k]);
     const std::string few = run_identify(two_by_two, "few");
-    EXPECT_TRUE(says(few, "no residual is left to estimate its error from")) << few;
-    EXPECT_FALSE(says(few, "nan")) << few;
+    EXPECT_TRUE(output_says(few, "no residual is left to estimate its error from")) << few;
+    EXPECT_FALSE(output_says(few, "nan")) << few;
 }
 
 TEST(IdentifyVerdicts, TheSharedCleanFileDeterminesEverything) {
@@ -119,7 +119,7 @@ TEST(IdentifyVerdicts, TheSharedCleanFileDeterminesEverything) {
                                                  "/pmsm/pmsm_public_2200rpm_2.5Nm_clean_ss.csv");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     for (const char* p : {"Rs", "Ld", "Lq", "psi"})
-        EXPECT_TRUE(says(r.out, std::string(p) + ": determined")) << r.out;
+        EXPECT_TRUE(output_says(r.out, std::string(p) + ": determined")) << r.out;
 }
 
 } // namespace

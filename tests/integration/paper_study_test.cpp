@@ -11,14 +11,9 @@
 
 namespace {
 namespace fs = std::filesystem;
+using mhb::testing_cli::fresh;
 using mhb::testing_cli::read_text;
 using mhb::testing_cli::run_mhbench;
-
-fs::path fresh(const std::string& name) {
-    const fs::path dir = mhb::testing_cli::scratch_directory() / name;
-    fs::remove_all(dir);
-    return dir;
-}
 
 std::size_t count_of(const std::string& text, const std::string& word) {
     std::size_t n = 0;

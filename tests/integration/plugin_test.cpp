@@ -18,17 +18,12 @@ using mhb::testing_cli::lines_of;
 using mhb::testing_cli::run_mhbench;
 using mhb::testing_cli::run_shell;
 using mhb::testing_cli::scratch_directory;
+using mhb::testing_cli::shell_quoted;
 
 const std::string test_plugins = MHB_TEST_PLUGIN_DIR;
 
-std::string shell_quoted(const std::filesystem::path& path) {
-    std::string out = "'"; // appended, not `"'" + ...`: GCC 12 warns (-Wrestrict) on that falsely
-    out += path.string();
-    return out += '\'';
-}
-
 // The extension example's study (tests/integration/extension_example_test.cpp), as options.
-const std::string example_study =
+const std::string example_study_options =
     "--algorithms 'one-plus-one:step=0.5 tlbo:np=10' --problems 'booth sphere:dim=2' "
     "--runs 3 --evaluations 2000 --no-report --quiet";
 
@@ -43,7 +38,7 @@ TEST(PluginCli, StudyIniRecordsThePluginSoThatTheStudyFileResumesIt) {
     const auto dir = scratch_directory() / "study-ini";
     std::filesystem::remove_all(dir);
     const std::string plugin = test_plugins + "/test_plugin_booth.so";
-    auto r = run_mhbench("run --plugin " + shell_quoted(plugin) + " " + example_study + " --out " +
+    auto r = run_mhbench("run --plugin " + shell_quoted(plugin) + " " + example_study_options + " --out " +
                          shell_quoted(dir));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(read_text(dir / "study.ini").find("plugins = " + plugin + "\n"), std::string::npos);
@@ -60,7 +55,7 @@ TEST(PluginCli, MergeLoadsThePluginsOfTheShardsStudyIni) {
     std::filesystem::remove_all(dir);
     const std::string plugin = test_plugins + "/test_plugin_booth.so";
     for (const char* shard : {"1", "2"}) {
-        const auto r = run_mhbench("run --plugin " + shell_quoted(plugin) + " " + example_study +
+        const auto r = run_mhbench("run --plugin " + shell_quoted(plugin) + " " + example_study_options +
                                    " --shard " + shard + "/2 --out " + shell_quoted(dir / shard));
         ASSERT_EQ(r.exit_code, 0) << r.err;
     }
@@ -136,7 +131,7 @@ TEST(PluginCli, APluginRebuiltUnderAStoredStudyIsRefusedLikeAChangedDataFile) {
     std::filesystem::copy_file(test_plugins + "/test_plugin_booth.so", plugin,
                                std::filesystem::copy_options::overwrite_existing);
     const std::string command =
-        "run --plugin " + shell_quoted(plugin) + " " + example_study + " --out " + shell_quoted(dir);
+        "run --plugin " + shell_quoted(plugin) + " " + example_study_options + " --out " + shell_quoted(dir);
     ASSERT_EQ(run_mhbench(command).exit_code, 0);
     // Other bytes, the same loadable module (as a rebuild with another compiler flag would be).
     { std::ofstream(plugin, std::ios::app | std::ios::binary) << "rebuilt"; }

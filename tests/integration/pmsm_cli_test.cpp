@@ -13,12 +13,12 @@
 
 namespace {
 
-struct Result {
+struct PmsmCliResult {
     int exit_code = -1;
     std::string output; // stdout and stderr together
 };
 
-Result run_cli(const std::string& arguments) {
+PmsmCliResult run_pmsm_cli(const std::string& arguments) {
     const auto r = mhb::testing_cli::run_mhbench(arguments);
     return {r.exit_code, r.out + r.err};
 }
@@ -31,8 +31,8 @@ TEST(PmsmCli, SimulateWritesTheDatasetOfTheLibrary) {
     const std::string a = testing::TempDir() + "pmsm_sim_a.csv";
     const std::string b = testing::TempDir() + "pmsm_sim_b.csv";
     const std::string options = " --speed 2000 --load 3 --noise-i 0.02 --noise-u 0.5 --seed 9 --samples 100";
-    ASSERT_EQ(run_cli("simulate --out " + a + options).exit_code, 0);
-    ASSERT_EQ(run_cli("simulate --out " + b + options).exit_code, 0);
+    ASSERT_EQ(run_pmsm_cli("simulate --out " + a + options).exit_code, 0);
+    ASSERT_EQ(run_pmsm_cli("simulate --out " + b + options).exit_code, 0);
     EXPECT_EQ(read_text(a), read_text(b));
 
     mhb::pmsm::SimulatorConfig config;
@@ -50,19 +50,19 @@ TEST(PmsmCli, SimulateWritesTheDatasetOfTheLibrary) {
 }
 
 TEST(PmsmCli, SimulateErrorsAreOneLineWithNonZeroExit) {
-    Result r = run_cli("simulate");
+    PmsmCliResult r = run_pmsm_cli("simulate");
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_EQ(r.output, "mhbench simulate: --out FILE is required (see mhbench simulate --help)\n");
-    r = run_cli("simulate --out " + testing::TempDir() + "x.csv --samples 501");
+    r = run_pmsm_cli("simulate --out " + testing::TempDir() + "x.csv --samples 501");
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_EQ(r.output, "mhbench simulate: --samples = 501 is outside [1, 500]\n");
-    r = run_cli("simulate --out " + testing::TempDir() + "x.csv --load abc");
+    r = run_pmsm_cli("simulate --out " + testing::TempDir() + "x.csv --load abc");
     EXPECT_EQ(r.exit_code, 2);
-    r = run_cli("simulate --out /nonexistent-dir/x.csv");
+    r = run_pmsm_cli("simulate --out /nonexistent-dir/x.csv");
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(r.output,
               "mhbench simulate: /nonexistent-dir/x.csv: cannot be written (No such file or directory)\n");
-    r = run_cli("simulate --help");
+    r = run_pmsm_cli("simulate --help");
     EXPECT_EQ(r.exit_code, 0);
     EXPECT_NE(r.output.find("--noise-u"), std::string::npos);
 }
@@ -70,8 +70,8 @@ TEST(PmsmCli, SimulateErrorsAreOneLineWithNonZeroExit) {
 // identify on the shared noisy file prints the least-squares optimum of expected.csv
 // (Rs_ls = 0.35919398646..., psi_ls = 0.07691100150...) and the errors against the truth.
 TEST(PmsmCli, IdentifyReportsTheLeastSquaresEstimate) {
-    const Result r = run_cli("identify --data " + std::string(MHB_TEST_DATA_DIR) +
-                             "/pmsm/pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
+    const PmsmCliResult r = run_pmsm_cli("identify --data " + std::string(MHB_TEST_DATA_DIR) +
+                                         "/pmsm/pmsm_public_2200rpm_2.5Nm_noisy_ss.csv");
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("0.35919399"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("0.076911002"), std::string::npos) << r.output;
@@ -80,7 +80,7 @@ TEST(PmsmCli, IdentifyReportsTheLeastSquaresEstimate) {
 
     const std::string bad = testing::TempDir() + "pmsm_bad.csv";
     std::ofstream(bad) << "t,ud,uq,id,iq,omega\n0,1,2,0,8,500\n0,1,x,-2,8,500\n";
-    const Result e = run_cli("identify --data " + bad);
+    const PmsmCliResult e = run_pmsm_cli("identify --data " + bad);
     EXPECT_EQ(e.exit_code, 1);
     EXPECT_EQ(e.output, "mhbench identify: " + bad + ": line 3, column 'uq': 'x' is not a number\n");
 }

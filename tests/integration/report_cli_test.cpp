@@ -29,13 +29,13 @@ struct TemporaryPaths {
 using Outcome = mhb::testing_cli::CliResult;
 using mhb::testing_cli::read_text;
 
-Outcome run_cli(const std::string& arguments) {
+Outcome run_report_cli(const std::string& arguments) {
     return mhb::testing_cli::run_mhbench(arguments);
 }
 
 // Two algorithms, 3 runs each; with `budgets`, the runs are repeated at every budget, and the
 // study lists its algorithms with labels (algorithms.csv).
-fs::path small_study(const std::string& name, const std::vector<std::string>& budgets = {""}) {
+fs::path small_study_dir(const std::string& name, const std::vector<std::string>& budgets = {""}) {
     const fs::path dir =
         fs::temp_directory_path() / ("mhb_report_cli_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(dir);
@@ -79,8 +79,8 @@ std::size_t line_count(const std::string& text) {
 }
 
 TEST(ReportCli, WritesTheTablesAndPrintsThemInMarkdown) {
-    const fs::path dir = small_study("ok");
-    const Outcome o = run_cli("report '" + dir.string() + "' --no-figures");
+    const fs::path dir = small_study_dir("ok");
+    const Outcome o = run_report_cli("report '" + dir.string() + "' --no-figures");
     EXPECT_EQ(o.exit_code, 0) << o.err;
     EXPECT_NE(o.out.find("### Table 2: Fitness of different algorithms"), std::string::npos) << o.out;
     EXPECT_NE(o.out.find("| itlbo | 3/3 |"), std::string::npos) << o.out;
@@ -89,8 +89,8 @@ TEST(ReportCli, WritesTheTablesAndPrintsThemInMarkdown) {
 }
 
 TEST(ReportCli, SeveralBudgetsEachInItsOwnFolderWithLabels) {
-    const fs::path dir = small_study("budgets", {"iterations=1", "evaluations=100"});
-    const Outcome o = run_cli("report '" + dir.string() + "' --no-figures");
+    const fs::path dir = small_study_dir("budgets", {"iterations=1", "evaluations=100"});
+    const Outcome o = run_report_cli("report '" + dir.string() + "' --no-figures");
     EXPECT_EQ(o.exit_code, 0) << o.err;
     EXPECT_NE(o.out.find("2 budgets, each reported in its own folder"), std::string::npos) << o.out;
     EXPECT_NE(o.out.find("### Table 2: Fitness of different algorithms (pmsm:load=2,speed=2500) [budget "
@@ -107,32 +107,32 @@ TEST(ReportCli, SeveralBudgetsEachInItsOwnFolderWithLabels) {
 }
 
 TEST(ReportCli, DamagedStudyGivesOneLineNamingTheFile) {
-    const fs::path dir = small_study("damaged");
+    const fs::path dir = small_study_dir("damaged");
     fs::remove(dir / "trajectories.csv");
-    const Outcome o = run_cli("report '" + dir.string() + "' --no-figures");
+    const Outcome o = run_report_cli("report '" + dir.string() + "' --no-figures");
     EXPECT_EQ(o.exit_code, 1);
     EXPECT_EQ(line_count(o.err), 1u) << o.err;
     EXPECT_NE(o.err.find("trajectories.csv"), std::string::npos) << o.err;
 
-    const fs::path truncated = small_study("truncated");
+    const fs::path truncated = small_study_dir("truncated");
     const std::string runs = read_text(truncated / "runs.csv");
     std::ofstream(truncated / "runs.csv", std::ios::trunc) << runs.substr(0, runs.size() - 7);
-    const Outcome t = run_cli("report '" + truncated.string() + "' --no-figures");
+    const Outcome t = run_report_cli("report '" + truncated.string() + "' --no-figures");
     EXPECT_EQ(t.exit_code, 1);
     EXPECT_EQ(line_count(t.err), 1u) << t.err;
     EXPECT_NE(t.err.find("runs.csv"), std::string::npos) << t.err;
 }
 
 TEST(ReportCli, BadOptionsAreUsageErrors) {
-    const fs::path dir = small_study("options");
-    const Outcome alpha = run_cli("report '" + dir.string() + "' --alpha 0 --no-figures");
+    const fs::path dir = small_study_dir("options");
+    const Outcome alpha = run_report_cli("report '" + dir.string() + "' --alpha 0 --no-figures");
     EXPECT_EQ(alpha.exit_code, 2);
     EXPECT_NE(alpha.err.find("--alpha"), std::string::npos) << alpha.err;
-    const Outcome reference = run_cli("report '" + dir.string() + "' --reference cmaes --no-figures");
+    const Outcome reference = run_report_cli("report '" + dir.string() + "' --reference cmaes --no-figures");
     EXPECT_EQ(reference.exit_code, 2);
     EXPECT_NE(reference.err.find("the study has: itlbo, pso"), std::string::npos) << reference.err;
-    EXPECT_EQ(run_cli("report").exit_code, 2);
-    const Outcome help = run_cli("report --help");
+    EXPECT_EQ(run_report_cli("report").exit_code, 2);
+    const Outcome help = run_report_cli("report --help");
     EXPECT_EQ(help.exit_code, 0);
     EXPECT_NE(help.out.find("--reference"), std::string::npos);
 }

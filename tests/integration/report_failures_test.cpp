@@ -18,6 +18,7 @@
 namespace mhb {
 namespace {
 namespace fs = std::filesystem;
+using mhb::testing_cli::fresh;
 using mhb::testing_cli::read_text;
 using mhb::testing_cli::run_mhbench;
 
@@ -37,12 +38,6 @@ void expect_no_nan_in_tables(const fs::path& report) {
         ++tables;
     }
     EXPECT_GE(tables, 10u);
-}
-
-fs::path fresh(const std::string& name) {
-    const fs::path dir = mhb::testing_cli::scratch_directory() / name;
-    fs::remove_all(dir);
-    return dir;
 }
 
 // Slow when it draws the figures (matplotlib takes a few seconds).

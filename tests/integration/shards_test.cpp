@@ -18,26 +18,26 @@ const std::string study_options =
     "--algorithms 'itlbo:obl={on,off} tlbo cmaes' --problems 'pmsm sphere:dim={3,8}' "
     "--budget iterations=5 --budget evaluations=400 --runs 3 --quiet ";
 
-fs::path fresh(const std::string& name) {
+fs::path fresh_shards_dir(const std::string& name) {
     const fs::path dir = mhb::testing_cli::scratch_directory() / ("shards_" + name);
     fs::remove_all(dir);
     return dir;
 }
 
 TEST(Shards, ThreeShardsMergedAreTheStudyOneProcessWritesByteForByte) {
-    const fs::path one = fresh("one");
+    const fs::path one = fresh_shards_dir("one");
     ASSERT_EQ(run_mhbench("run " + study_options + "--no-report --threads 2 --out " + one.string()).exit_code,
               0);
     std::vector<fs::path> shards;
     for (int i = 1; i <= 3; ++i) {
-        shards.push_back(fresh("part" + std::to_string(i)));
+        shards.push_back(fresh_shards_dir("part" + std::to_string(i)));
         const auto r = run_mhbench("run " + study_options + "--threads 1 --shard " + std::to_string(i) +
                                    "/3 --out " + shards.back().string());
         ASSERT_EQ(r.exit_code, 0) << r.err;
         EXPECT_EQ(read_text(shards.back() / "shard.txt"), "shard = " + std::to_string(i) + "/3\n");
         EXPECT_FALSE(fs::exists(shards.back() / "report")); // a shard is part of a study
     }
-    const fs::path merged = fresh("merged");
+    const fs::path merged = fresh_shards_dir("merged");
     // Any order of the shard directories.
     const auto r = run_mhbench("merge " + merged.string() + " " + shards[2].string() + " " +
                                shards[0].string() + " " + shards[1].string() + " --no-figures --quiet");
@@ -89,19 +89,19 @@ TEST(Shards, TheSplitIsDeterministicCompleteAndBalancedByCost) {
 TEST(Shards, MergeRefusesOtherStudiesDuplicatesMissingAndUnfinishedShards) {
     std::vector<fs::path> shards;
     for (int i = 1; i <= 2; ++i) {
-        shards.push_back(fresh("pair" + std::to_string(i)));
+        shards.push_back(fresh_shards_dir("pair" + std::to_string(i)));
         ASSERT_EQ(run_mhbench("run " + study_options + "--shard " + std::to_string(i) + "/2 --out " +
                               shards.back().string())
                       .exit_code,
                   0);
     }
-    const fs::path other = fresh("other");
+    const fs::path other = fresh_shards_dir("other");
     ASSERT_EQ(run_mhbench("run " + study_options + "--seed 2 --shard 2/2 --out " + other.string()).exit_code,
               0);
-    const fs::path whole = fresh("whole");
+    const fs::path whole = fresh_shards_dir("whole");
     ASSERT_EQ(run_mhbench("run " + study_options + "--no-report --out " + whole.string()).exit_code, 0);
     const auto merge = [&](const std::string& dirs) {
-        return run_mhbench("merge " + fresh("out").string() + " " + dirs);
+        return run_mhbench("merge " + fresh_shards_dir("out").string() + " " + dirs);
     };
     const std::string a = shards[0].string();
     const std::string b = shards[1].string();
@@ -115,7 +115,7 @@ TEST(Shards, MergeRefusesOtherStudiesDuplicatesMissingAndUnfinishedShards) {
                                                        ": is not a shard (no shard.txt); mhbench merge joins "
                                                        "the directories of mhbench run --shard i/n\n");
     EXPECT_EQ(merge(a).exit_code, 1);
-    EXPECT_FALSE(fs::exists(fresh("out") / "runs.csv"));
+    EXPECT_FALSE(fs::exists(fresh_shards_dir("out") / "runs.csv"));
     // An unfinished shard (its runs.csv gone, its store left) is named as such.
     fs::remove(shards[1] / "runs.csv");
     const auto unfinished = merge(a + " " + b);
@@ -136,18 +136,18 @@ namespace {
 // The case: shard 1/2 on drive.csv, the file regenerated, shard 2/2, merge. study.ini names
 // the same path for both; the hashes the shards recorded tell them apart.
 TEST(Shards, MergeRefusesShardsThatReadDifferentDataOrWereBuiltDifferently) {
-    const fs::path data = fresh("drive.csv");
+    const fs::path data = fresh_shards_dir("drive.csv");
     ASSERT_EQ(run_mhbench("simulate --out " + data.string()).exit_code, 0);
     const std::string old_hash = mhb::sha256_hex(read_text(data));
     const std::string study = "--algorithms pso --problems pmsm:data=" + data.string() +
                               " --iterations 3 --runs 2 --quiet --no-report --out ";
-    const fs::path s1 = fresh("data1");
-    const fs::path s2 = fresh("data2");
+    const fs::path s1 = fresh_shards_dir("data1");
+    const fs::path s2 = fresh_shards_dir("data2");
     ASSERT_EQ(run_mhbench("run " + study + s1.string() + " --shard 1/2").exit_code, 0);
     ASSERT_EQ(run_mhbench("simulate --load 3 --out " + data.string()).exit_code, 0);
     const std::string new_hash = mhb::sha256_hex(read_text(data));
     ASSERT_EQ(run_mhbench("run " + study + s2.string() + " --shard 2/2").exit_code, 0);
-    const fs::path merged = fresh("data_merged");
+    const fs::path merged = fresh_shards_dir("data_merged");
     const auto mixed = run_mhbench("merge " + merged.string() + " " + s1.string() + " " + s2.string());
     EXPECT_EQ(mixed.exit_code, 1);
     EXPECT_EQ(mixed.err, "mhbench merge: " + fs::absolute(data).lexically_normal().string() + ": sha256 " +
@@ -179,7 +179,7 @@ TEST(Shards, MergeRefusesShardsThatReadDifferentDataOrWereBuiltDifferently) {
 }
 
 TEST(Shards, TheSlurmExampleRunsEveryTaskAndMerges) {
-    const fs::path dir = fresh("slurm");
+    const fs::path dir = fresh_shards_dir("slurm");
     fs::create_directories(dir);
     std::ofstream(dir / "study.ini") << "algorithms = tlbo pso\nproblems = sphere:dim=3\nruns = 5\nbudget = "
                                         "iterations=5\n";

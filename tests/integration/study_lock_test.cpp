@@ -15,7 +15,7 @@ using mhb::testing_cli::read_text;
 using mhb::testing_cli::run_mhbench;
 using mhb::testing_cli::run_shell;
 
-fs::path fresh(const std::string& name) {
+fs::path fresh_lock_dir(const std::string& name) {
     const fs::path dir = mhb::testing_cli::scratch_directory() / ("lock_" + name);
     fs::remove_all(dir);
     return dir;
@@ -26,9 +26,9 @@ const std::string slow_study = "--algorithms 'random-search:batch=50 tlbo' --pro
                                "--evaluations 100000 --runs 40 --threads 2 --quiet --no-report";
 
 TEST(StudyLock, ASecondWriterIsRefusedWhileTheFirstRunsAndTheFirstEndsAsACleanRun) {
-    const fs::path dir = fresh("shared");
-    const fs::path reference = fresh("reference");
-    const fs::path logs = fresh("logs");
+    const fs::path dir = fresh_lock_dir("shared");
+    const fs::path reference = fresh_lock_dir("reference");
+    const fs::path logs = fresh_lock_dir("logs");
     fs::create_directories(logs);
     ASSERT_EQ(run_mhbench("run " + slow_study + " --out '" + reference.string() + "'").exit_code, 0);
 
@@ -77,7 +77,7 @@ TEST(StudyLock, ASecondWriterIsRefusedWhileTheFirstRunsAndTheFirstEndsAsACleanRu
 }
 
 TEST(StudyLock, ARunKilledWithSigkillLeavesALockTheNextRunTakesOver) {
-    const fs::path dir = fresh("killed");
+    const fs::path dir = fresh_lock_dir("killed");
     const std::string command =
         std::string("'") + MHB_CLI_PATH + "' run " + slow_study + " --out '" + dir.string() + "'";
     const std::string lock = (dir / ".mhbench.lock").string();

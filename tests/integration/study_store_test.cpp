@@ -16,7 +16,7 @@ using mhb::testing_cli::read_text;
 using mhb::testing_cli::run_mhbench;
 using mhb::testing_cli::run_shell;
 
-fs::path fresh(const std::string& name) {
+fs::path fresh_store_dir(const std::string& name) {
     const fs::path dir = mhb::testing_cli::scratch_directory() / ("store_" + name);
     fs::remove_all(dir);
     return dir;
@@ -50,7 +50,7 @@ std::string run_args(const std::string& algorithms, const std::string& problems,
 }
 
 TEST(StudyStore, ExtendingByRunsOptimiserProblemAndBudgetComputesOnlyTheNewRuns) {
-    const fs::path grown = fresh("grown");
+    const fs::path grown = fresh_store_dir("grown");
     const std::string one_budget = "--budget iterations=8";
     const std::string two_budgets = "--budget iterations=8 --budget evaluations=300";
 
@@ -80,7 +80,7 @@ TEST(StudyStore, ExtendingByRunsOptimiserProblemAndBudgetComputesOnlyTheNewRuns)
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(runs_computed(r.out), 30) << r.out;
 
-    const fs::path at_once = fresh("at_once");
+    const fs::path at_once = fresh_store_dir("at_once");
     r = run_mhbench(run_args("jaya tlbo pso", "sphere:dim=3 pmsm", two_budgets, 5, at_once));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(runs_computed(r.out), 60);
@@ -91,7 +91,7 @@ TEST(StudyStore, ExtendingByRunsOptimiserProblemAndBudgetComputesOnlyTheNewRuns)
     r = run_mhbench(run_args("pso", "pmsm", one_budget, 3, grown));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(runs_computed(r.out), 0) << r.out;
-    const fs::path small = fresh("small");
+    const fs::path small = fresh_store_dir("small");
     ASSERT_EQ(run_mhbench(run_args("pso", "pmsm", one_budget, 3, small)).exit_code, 0);
     expect_same_records(grown, small);
     r = run_mhbench(run_args("jaya tlbo pso", "sphere:dim=3 pmsm", two_budgets, 5, grown));
@@ -100,9 +100,9 @@ TEST(StudyStore, ExtendingByRunsOptimiserProblemAndBudgetComputesOnlyTheNewRuns)
 }
 
 TEST(StudyStore, ChangesUnderStoredRunsAreRefusedNamingTheChange) {
-    const fs::path dir = fresh("changes");
-    const fs::path data = fresh("drive.csv");
-    const fs::path other = fresh("other.csv");
+    const fs::path dir = fresh_store_dir("changes");
+    const fs::path data = fresh_store_dir("drive.csv");
+    const fs::path other = fresh_store_dir("other.csv");
     ASSERT_EQ(run_mhbench("simulate --out " + data.string()).exit_code, 0);
     ASSERT_EQ(run_mhbench("simulate --load 3 --out " + other.string()).exit_code, 0);
     const std::string problem = "pmsm:data=" + data.string();
@@ -114,7 +114,7 @@ TEST(StudyStore, ChangesUnderStoredRunsAreRefusedNamingTheChange) {
         "--overwrite to discard the stored runs and start again, or choose another --out";
 
     // The data file replaced behind the same path.
-    const fs::path saved = fresh("drive.csv.saved");
+    const fs::path saved = fresh_store_dir("drive.csv.saved");
     fs::copy_file(data, saved);
     fs::copy_file(other, data, fs::copy_options::overwrite_existing);
     auto r = run_mhbench(args);
@@ -148,7 +148,7 @@ TEST(StudyStore, ChangesUnderStoredRunsAreRefusedNamingTheChange) {
 
     // The same content under another path is the same problem: nothing to compute, and runs.csv
     // names the path given now.
-    const fs::path moved = fresh("moved.csv");
+    const fs::path moved = fresh_store_dir("moved.csv");
     fs::copy_file(data, moved);
     r = run_mhbench(
         run_args("pso:w=0.6,label=mine tlbo", "pmsm:data=" + moved.string(), "--iterations 4", 2, dir));
@@ -165,8 +165,8 @@ TEST(StudyStore, ChangesUnderStoredRunsAreRefusedNamingTheChange) {
 }
 
 TEST(StudyStore, StudyIniStoresAbsoluteDataPathsSoStudyFilesWorkFromAnyDirectory) {
-    const fs::path dir = fresh("absolute");
-    const fs::path work = fresh("workdir");
+    const fs::path dir = fresh_store_dir("absolute");
+    const fs::path work = fresh_store_dir("workdir");
     fs::create_directories(work);
     ASSERT_EQ(run_mhbench("simulate --out " + (work / "drive.csv").string()).exit_code, 0);
     const auto r =
@@ -196,8 +196,8 @@ std::string stored_bytes(double value) {
 }
 
 TEST(StudyStore, AFlippedByteInAStoredValueIsComputedAgainWithOneWarning) {
-    const fs::path reference = fresh("flipped_reference");
-    const fs::path dir = fresh("flipped");
+    const fs::path reference = fresh_store_dir("flipped_reference");
+    const fs::path dir = fresh_store_dir("flipped");
     const auto args = [](const fs::path& out) {
         return run_args("pso", "sphere:dim=2", "--evaluations 400", 4, out);
     };
@@ -233,8 +233,8 @@ TEST(StudyStore, AFlippedByteInAStoredValueIsComputedAgainWithOneWarning) {
 
 // SIGKILL at the first sign of the phase named by `ready` (a shell test), then the same command.
 void kill_then_complete(const std::string& name, const std::string& extra, const std::string& ready) {
-    const fs::path dir = fresh(name);
-    const fs::path reference = fresh(name + "_reference");
+    const fs::path dir = fresh_store_dir(name);
+    const fs::path reference = fresh_store_dir(name + "_reference");
     const std::string study = "--algorithms 'random-search:batch=50 tlbo' --problems 'sphere:dim=4 pmsm' "
                               "--evaluations 100000 --runs 20 --threads 2 ";
     ASSERT_EQ(run_mhbench("run --quiet --no-report " + study + "--out " + reference.string()).exit_code, 0);
@@ -258,12 +258,12 @@ void kill_then_complete(const std::string& name, const std::string& extra, const
 }
 
 TEST(StudyStore, SigkillDuringTheRunsLeavesADirectoryTheSameCommandCompletes) {
-    const fs::path dir = fresh("killed_runs");
+    const fs::path dir = fresh_store_dir("killed_runs");
     kill_then_complete("killed_runs", "--no-report", "[ -s '" + (dir / "store.bin").string() + "' ]");
 }
 
 TEST(StudyStore, SigkillDuringTheReportLeavesADirectoryTheSameCommandCompletes) {
-    const fs::path dir = fresh("killed_report");
+    const fs::path dir = fresh_store_dir("killed_report");
     // With figures, so that the plotting child is under way too.
     kill_then_complete("killed_report", "", "[ -e '" + (dir / "runs.csv").string() + "' ]");
 }
