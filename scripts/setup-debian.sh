@@ -24,6 +24,7 @@ packages=(
     libgtest-dev libgmock-dev            # GoogleTest
     libbenchmark-dev                     # Google Benchmark
     python3-matplotlib                   # figures (Debian's /usr/bin/python3)
+    python3-munkres                      # what matplotlib's font tools need instead of SciPy (200 MB)
 )
 optional_fuzz=(clang libclang-rt-dev)    # scripts/fuzz.sh: clang with libFuzzer and its sanitizers
 optional_mpi=(libopenmpi-dev openmpi-bin) # scripts/mpi.sh: Open MPI for `mpirun -np N mhbench run`
