@@ -49,6 +49,8 @@ const std::vector<std::string>& batching_specs() {
         "random-search:batch=7",
         "de:np=12",
         "lshade",
+        "jso",
+        "jso:r_ninit=3,H=2",
         "jaya:np=13",
         "pso",
         "pso:np=9,r=learner,vmax=0.2",
