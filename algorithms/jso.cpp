@@ -81,6 +81,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/population.hpp"
+#include "algorithms/shade_steps.hpp"
 
 namespace mhb {
 namespace {
@@ -94,17 +95,6 @@ struct JsoSettings {
     double m_f = 0.3;
     double m_cr = 0.8;
 };
-
-// sum w s^2 / sum w s with w proportional to the improvements; `den` receives sum w s.
-double jso_lehmer_mean(const std::vector<double>& s, const std::vector<double>& delta, double& den) {
-    double num = 0.0;
-    den = 0.0;
-    for (std::size_t k = 0; k < s.size(); ++k) {
-        num += delta[k] * s[k] * s[k];
-        den += delta[k] * s[k];
-    }
-    return den > 0.0 ? num / den : 0.0;
-}
 
 class Jso final : public Optimizer {
 public:
@@ -123,8 +113,8 @@ public:
                 "jso: initial population round(r_ninit * sqrt(D) * ln(D)) = " + std::to_string(n_init) +
                 " is smaller than n_min = " + std::to_string(n_min) +
                 "; raise 'r_ninit' (D = 1 needs another method)");
-        const double max_nfe =
-            max_evaluations(objective.budget(), static_cast<double>(n_init), static_cast<double>(n_min));
+        const double max_nfe = shade::lpsr_max_evaluations(objective.budget(), static_cast<double>(n_init),
+                                                           static_cast<double>(n_min));
 
         Population pop = random_population(objective, rng, n_init);
         auto& x = pop.x;
@@ -188,19 +178,7 @@ public:
                 const Eigen::VectorXd& x_r2 = r2 < n ? x[r2] : archive[r2 - n];
 
                 v = x[i] + (fw_factor * f) * (x[pbest] - x[i]) + f * (x[r1] - x_r2);
-                const auto k_rand = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(d)));
-                Eigen::VectorXd u = x[i];
-                for (Eigen::Index k = 0; k < d; ++k) {
-                    if (!(rng.uniform() < cr || k == k_rand))
-                        continue;
-                    double value = v[k];
-                    if (value < box.lower[k])
-                        value = 0.5 * (box.lower[k] + x[i][k]);
-                    else if (value > box.upper[k])
-                        value = 0.5 * (box.upper[k] + x[i][k]);
-                    u[k] = value;
-                }
-                trials[i] = std::move(u);
+                trials[i] = shade::binomial_crossover(x[i], v, cr, box, rng);
             }
             // All trials come from the generation as it began: one batch, in index order. The
             // Objective stops it exactly at the evaluation budget (BudgetExhausted ends the run).
@@ -227,11 +205,10 @@ public:
                 fx[i] = f_trials[i];
             }
             if (!s_f.empty()) {
-                double den_f = 0.0, den_cr = 0.0;
-                const double mean_f = jso_lehmer_mean(s_f, s_delta, den_f);
-                double mean_cr = jso_lehmer_mean(s_cr, s_delta, den_cr);
-                if (den_cr == 0.0)
-                    mean_cr = -1.0;
+                const double mean_f = shade::weighted_lehmer_mean(s_f, s_delta);
+                // Every successful CR was 0: the code's mean is -1 (see the header).
+                const bool all_cr_zero = *std::max_element(s_cr.begin(), s_cr.end()) == 0.0;
+                const double mean_cr = all_cr_zero ? -1.0 : shade::weighted_lehmer_mean(s_cr, s_delta);
                 m_f[k_memory] = 0.5 * (mean_f + m_f[k_memory]);
                 m_cr[k_memory] = 0.5 * (mean_cr + m_cr[k_memory]);
                 k_memory = (k_memory + 1) % h;
@@ -239,10 +216,7 @@ public:
 
             // Linear population size reduction from the evaluations spent.
             const auto nfes = static_cast<double>(objective.evaluations());
-            const double planned =
-                std::round((static_cast<double>(n_min) - static_cast<double>(n_init)) / max_nfe * nfes +
-                           static_cast<double>(n_init));
-            const auto n_next = static_cast<std::size_t>(std::max(planned, static_cast<double>(n_min)));
+            const std::size_t n_next = shade::lpsr_size(n_init, n_min, max_nfe, nfes);
             if (n_next < n) {
                 while (x.size() > n_next) {
                     std::size_t worst = 0;
@@ -264,15 +238,6 @@ public:
     }
 
 private:
-    static double max_evaluations(const Budget& budget, double n_init, double n_min) {
-        if (budget.max_evaluations)
-            return static_cast<double>(*budget.max_evaluations);
-        const auto generations = static_cast<double>(*budget.max_iterations);
-        if (n_init <= n_min)
-            return generations * n_init;
-        return generations * (n_init - n_min) / std::log(n_init / n_min);
-    }
-
     JsoSettings s_;
 };
 

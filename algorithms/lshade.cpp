@@ -23,6 +23,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/population.hpp"
+#include "algorithms/shade_steps.hpp"
 
 namespace mhb {
 namespace {
@@ -34,16 +35,6 @@ struct LshadeSettings {
     double p_best = 0.11;
     long long memory = 6;
 };
-
-// sum w s^2 / sum w s with w proportional to the improvements (SHADE's weighted Lehmer mean).
-double weighted_lehmer_mean(const std::vector<double>& s, const std::vector<double>& delta) {
-    double num = 0.0, den = 0.0;
-    for (std::size_t k = 0; k < s.size(); ++k) {
-        num += delta[k] * s[k] * s[k];
-        den += delta[k] * s[k];
-    }
-    return den > 0.0 ? num / den : 0.0;
-}
 
 class Lshade final : public Optimizer {
 public:
@@ -61,8 +52,8 @@ public:
                 "lshade: initial population round(r_ninit * D) = " + std::to_string(n_init) +
                 " is smaller than n_min = " + std::to_string(n_min) +
                 "; raise 'r_ninit' (the population is too small)");
-        const double max_nfe =
-            max_evaluations(objective.budget(), static_cast<double>(n_init), static_cast<double>(n_min));
+        const double max_nfe = shade::lpsr_max_evaluations(objective.budget(), static_cast<double>(n_init),
+                                                           static_cast<double>(n_min));
 
         Population pop = random_population(objective, rng, n_init);
         auto& x = pop.x;
@@ -113,19 +104,7 @@ public:
 
                 const double fi = f_used[i];
                 v = x[i] + fi * (pbest - x[i]) + fi * (x[r1] - x_r2);
-                const auto k_rand = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(d)));
-                Eigen::VectorXd u = x[i];
-                for (Eigen::Index k = 0; k < d; ++k) {
-                    if (!(rng.uniform() < cr_used[i] || k == k_rand))
-                        continue;
-                    double value = v[k];
-                    if (value < box.lower[k])
-                        value = 0.5 * (box.lower[k] + x[i][k]);
-                    else if (value > box.upper[k])
-                        value = 0.5 * (box.upper[k] + x[i][k]);
-                    u[k] = value;
-                }
-                trials[i] = std::move(u);
+                trials[i] = shade::binomial_crossover(x[i], v, cr_used[i], box, rng);
             }
             // Every trial is built from the generation as it began, so they are evaluated as one
             // batch (in parallel for an expensive problem), in index order, before any selection.
@@ -157,16 +136,14 @@ public:
                 if (cr_terminal[k_memory] || all_cr_zero)
                     cr_terminal[k_memory] = true;
                 else
-                    m_cr[k_memory] = weighted_lehmer_mean(s_cr, s_delta);
-                m_f[k_memory] = weighted_lehmer_mean(s_f, s_delta);
+                    m_cr[k_memory] = shade::weighted_lehmer_mean(s_cr, s_delta);
+                m_f[k_memory] = shade::weighted_lehmer_mean(s_f, s_delta);
                 k_memory = (k_memory + 1) % h;
             }
 
             // Linear population size reduction: drop the worst, shrink the archive at random.
-            const double planned = std::round((static_cast<double>(n_min) - static_cast<double>(n_init)) /
-                                                  max_nfe * static_cast<double>(objective.evaluations()) +
-                                              static_cast<double>(n_init));
-            const auto n_next = static_cast<std::size_t>(std::max(planned, static_cast<double>(n_min)));
+            const std::size_t n_next =
+                shade::lpsr_size(n_init, n_min, max_nfe, static_cast<double>(objective.evaluations()));
             if (n_next < n) {
                 order = pop.ranking();
                 std::vector<Eigen::VectorXd> kept_x(n_next);
@@ -191,15 +168,6 @@ public:
     }
 
 private:
-    static double max_evaluations(const Budget& budget, double n_init, double n_min) {
-        if (budget.max_evaluations)
-            return static_cast<double>(*budget.max_evaluations);
-        const auto generations = static_cast<double>(*budget.max_iterations);
-        if (n_init <= n_min)
-            return generations * n_init;
-        return generations * (n_init - n_min) / std::log(n_init / n_min);
-    }
-
     LshadeSettings s_;
 };
 

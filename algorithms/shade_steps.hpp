@@ -1,0 +1,73 @@
+// The steps L-SHADE (lshade.cpp) and jSO (jso.cpp) share: the weighted Lehmer mean of the
+// success-history update, linear population size reduction (LPSR) and the binomial crossover whose
+// coordinates outside the box go halfway back to the parent (JADE/SHADE's rule, so that the
+// Objective's repair never acts).
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "problems/core/rng.hpp"
+#include "problems/objective.hpp"
+#include "problems/problem.hpp"
+
+namespace mhb::shade {
+
+// sum w s^2 / sum w s with w proportional to the improvements `delta` (SHADE's weighted Lehmer
+// mean); 0 when that sum is 0.
+inline double weighted_lehmer_mean(const std::vector<double>& s, const std::vector<double>& delta) {
+    double num = 0.0, den = 0.0;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        num += delta[k] * s[k] * s[k];
+        den += delta[k] * s[k];
+    }
+    return den > 0.0 ? num / den : 0.0;
+}
+
+// MAX_NFE, which LPSR needs: the evaluation budget, or, with only an iteration budget G, the number
+// that makes LPSR reach n_min near generation G. Since dG/dNFE = 1/N(NFE) and N falls linearly,
+// G = MAX_NFE ln(n_init / n_min) / (n_init - n_min), so MAX_NFE = G (n_init - n_min) / ln(n_init / n_min)
+// (G n_init when the two sizes are equal).
+inline double lpsr_max_evaluations(const Budget& budget, double n_init, double n_min) {
+    if (budget.max_evaluations)
+        return static_cast<double>(*budget.max_evaluations);
+    const auto generations = static_cast<double>(*budget.max_iterations);
+    if (n_init <= n_min)
+        return generations * n_init;
+    return generations * (n_init - n_min) / std::log(n_init / n_min);
+}
+
+// The population size LPSR plans once `nfes` evaluations are spent:
+// round(n_init + (n_min - n_init) nfes / MAX_NFE), never below n_min.
+inline std::size_t lpsr_size(std::size_t n_init, std::size_t n_min, double max_nfe, double nfes) {
+    const double planned =
+        std::round((static_cast<double>(n_min) - static_cast<double>(n_init)) / max_nfe * nfes +
+                   static_cast<double>(n_init));
+    return static_cast<std::size_t>(std::max(planned, static_cast<double>(n_min)));
+}
+
+// The trial vector: each coordinate from `mutant` with probability cr (one coordinate, drawn first,
+// always), else from `parent`; a mutant coordinate outside the box is set halfway between the
+// parent and the violated bound. Draws: the forced coordinate, then one uniform per coordinate.
+inline Eigen::VectorXd binomial_crossover(const Eigen::VectorXd& parent, const Eigen::VectorXd& mutant,
+                                          double cr, const Box& box, Rng& rng) {
+    const Eigen::Index d = parent.size();
+    const auto k_rand = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(d)));
+    Eigen::VectorXd u = parent;
+    for (Eigen::Index k = 0; k < d; ++k) {
+        if (!(rng.uniform() < cr || k == k_rand))
+            continue;
+        double value = mutant[k];
+        if (value < box.lower[k])
+            value = 0.5 * (box.lower[k] + parent[k]);
+        else if (value > box.upper[k])
+            value = 0.5 * (box.upper[k] + parent[k]);
+        u[k] = value;
+    }
+    return u;
+}
+
+} // namespace mhb::shade
