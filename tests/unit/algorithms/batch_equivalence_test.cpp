@@ -57,6 +57,7 @@ const std::vector<std::string>& batching_specs() {
         "spso2011:S=11",
         "cmaes",
         "cmaes:restarts=none,lambda=9",
+        "cmaes:restarts=bipop",
         "tlbo:np=10",
         "itlbo:np=10",
         "itlbo:np=10,p=0.5,obl_greedy=on,obl_bounds=population",
