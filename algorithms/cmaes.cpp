@@ -15,42 +15,30 @@
 // sigma0 means the same on every problem (the PMSM parameters span 0.5 ohm and 0.01 H).
 // Defaults: lambda = 4 + floor(3 ln D), mu = floor(lambda / 2), sigma0 = 0.3 of the box width
 // (Hansen: about a quarter to a third of the search range), m0 uniform in the box.
-// Bound handling: a sample outside the box is redrawn up to 10 times (the draws cost no evaluation);
-// if it is still outside, the Objective clamps it, and the update uses the clamped point that was
-// actually evaluated.
+// Bound handling: a sample outside the box is redrawn up to 10 times in all (the draws cost no
+// evaluation; a generation's first draws come first, then the redraws); if it is still outside, the
+// Objective clamps it, and the update uses the clamped point that was actually evaluated.
+// The eigendecomposition of C is postponed by Hansen's rule in purecma (cma_run.cpp says which).
+// Version 2 (issue 26): that rule, instead of the tutorial's, and the generation's linear algebra as
+// matrix products; the same algorithm, other numbers for a given seed (version 1 decomposed C at
+// every generation from D = 10 on).
 // Restart criteria (Hansen's tutorial, appendix B.3, and pycma's defaults): TolFun 1e-12 on the
 // range of the current and the last 10 + ceil(30 D / lambda) generations' best f, TolX 1e-12 * sigma0,
 // condition number of C above 1e14, no effect of an axis or of a coordinate, a non-finite sigma.
 // Evaluations: lambda per iteration (the first generation is iteration 0); a generation's offspring
 // are evaluated as one batch (Objective::evaluate_batch).
-#include <Eigen/Eigenvalues>
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <deque>
-#include <limits>
-#include <numeric>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include "algorithms/algorithm_registry.hpp"
-#include "algorithms/sampling.hpp"
+#include "algorithms/cma_run.hpp"
 
 namespace mhb {
 namespace {
 
 enum class Restarts { ipop, bipop, none };
-
-constexpr long long kNoGenerationCap = std::numeric_limits<long long>::max();
-
-// What one CMA-ES run starts from: its population size, its initial step size (a fraction of the
-// box width) and the most generations it may take (BIPOP caps its small-population runs).
-struct CmaRunSettings {
-    int lambda;
-    double sigma0;
-    long long max_generations;
-};
 
 class CmaEs final : public Optimizer {
 public:
@@ -70,7 +58,7 @@ public:
         }
         long long lambda = default_lambda;
         while (!objective.exhausted()) {
-            run_once(objective, rng, {static_cast<int>(lambda), sigma0_, kNoGenerationCap}, first);
+            cma::run_once(objective, rng, {static_cast<int>(lambda), sigma0_}, sigma0_, first);
             if (restarts_ == Restarts::none)
                 return;
             lambda *= 2;
@@ -89,12 +77,12 @@ private:
     void run_bipop(Objective& objective, Rng& rng, long long default_lambda, bool& first) const {
         std::int64_t small_budget = 0, large_budget = 0;
         long long large_lambda = default_lambda;
-        const auto spent_by = [&](const CmaRunSettings& settings) {
+        const auto spent_by = [&](const cma::RunSettings& settings) {
             const std::int64_t before = objective.evaluations();
-            run_once(objective, rng, settings, first);
+            cma::run_once(objective, rng, settings, sigma0_, first);
             return objective.evaluations() - before;
         };
-        small_budget += spent_by({static_cast<int>(default_lambda), sigma0_, kNoGenerationCap});
+        small_budget += spent_by({static_cast<int>(default_lambda), sigma0_});
         while (!objective.exhausted()) {
             if (small_budget < large_budget) {
                 const double sigma = sigma0_ * std::pow(0.01, rng.uniform());
@@ -107,138 +95,8 @@ private:
                 small_budget += spent_by({static_cast<int>(lambda), sigma, generations});
             } else {
                 large_lambda *= 2;
-                large_budget += spent_by({static_cast<int>(large_lambda), sigma0_, kNoGenerationCap});
+                large_budget += spent_by({static_cast<int>(large_lambda), sigma0_});
             }
-        }
-    }
-
-    // One CMA-ES run from a random mean until a stop criterion, the generation cap or the budget
-    // ends it.
-    void run_once(Objective& objective, Rng& rng, const CmaRunSettings& settings, bool& first) const {
-        const int lambda = settings.lambda;
-        const Eigen::Index n = objective.dimension();
-        const double dn = static_cast<double>(n);
-        const Box& box = objective.bounds();
-        const Eigen::ArrayXd width = (box.upper - box.lower).array();
-
-        // Selection and adaptation constants (tutorial, Table 1).
-        const int mu = lambda / 2;
-        Eigen::VectorXd w(mu);
-        for (int i = 0; i < mu; ++i)
-            w[i] = std::log((lambda + 1) / 2.0) - std::log(i + 1.0);
-        w /= w.sum();
-        const double mu_eff = 1.0 / w.squaredNorm();
-        const double c_c = (4.0 + mu_eff / dn) / (dn + 4.0 + 2.0 * mu_eff / dn);
-        const double c_s = (mu_eff + 2.0) / (dn + mu_eff + 5.0);
-        const double c_1 = 2.0 / ((dn + 1.3) * (dn + 1.3) + mu_eff);
-        const double c_mu =
-            std::min(1.0 - c_1, 2.0 * (mu_eff - 2.0 + 1.0 / mu_eff) / ((dn + 2.0) * (dn + 2.0) + mu_eff));
-        const double d_s = 1.0 + 2.0 * std::max(0.0, std::sqrt((mu_eff - 1.0) / (dn + 1.0)) - 1.0) + c_s;
-        const double chi_n = std::sqrt(dn) * (1.0 - 1.0 / (4.0 * dn) + 1.0 / (21.0 * dn * dn));
-        const auto eigen_gap = static_cast<long long>(std::max(1.0, 1.0 / ((c_1 + c_mu) * dn * 10.0)));
-
-        Eigen::VectorXd m(n);
-        for (Eigen::Index k = 0; k < n; ++k)
-            m[k] = rng.uniform();
-        double sigma = settings.sigma0;
-        Eigen::VectorXd p_s = Eigen::VectorXd::Zero(n), p_c = Eigen::VectorXd::Zero(n);
-        Eigen::MatrixXd c = Eigen::MatrixXd::Identity(n, n), b = Eigen::MatrixXd::Identity(n, n);
-        Eigen::VectorXd diag_d = Eigen::VectorXd::Ones(n);
-        Eigen::MatrixXd inv_sqrt_c = Eigen::MatrixXd::Identity(n, n);
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(n);
-
-        Eigen::MatrixXd y(n, lambda); // steps (x - m) / sigma in normalised coordinates
-        std::vector<double> f(static_cast<std::size_t>(lambda));
-        std::vector<int> order(static_cast<std::size_t>(lambda));
-        std::deque<double> best_history;
-        const auto history_length = static_cast<std::size_t>(10 + std::ceil(30.0 * dn / lambda));
-        Eigen::VectorXd z(n);
-        std::vector<Eigen::VectorXd> x(static_cast<std::size_t>(lambda), Eigen::VectorXd::Zero(n));
-        long long generation = 0;
-
-        while (!objective.exhausted()) {
-            // The lambda offspring are sampled first and evaluated as one batch (in parallel for
-            // an expensive problem): no sample depends on an f of its generation.
-            for (int j = 0; j < lambda; ++j) {
-                Eigen::VectorXd yn(n);
-                for (int attempt = 0; attempt < 10; ++attempt) {
-                    for (Eigen::Index k = 0; k < n; ++k)
-                        z[k] = rng.normal();
-                    yn = m + sigma * (b * diag_d.cwiseProduct(z));
-                    if ((yn.array() >= 0.0).all() && (yn.array() <= 1.0).all())
-                        break;
-                }
-                x[static_cast<std::size_t>(j)] = box.lower + (yn.array() * width).matrix();
-            }
-            objective.evaluate_batch(x, f); // clamps the samples still outside
-            for (int j = 0; j < lambda; ++j) {
-                y.col(j) = ((x[static_cast<std::size_t>(j)] - box.lower).array() / width).matrix() - m;
-                y.col(j) /= sigma;
-            }
-            if (first) {
-                objective.initialised();
-                first = false;
-            } else {
-                objective.end_iteration();
-            }
-            ++generation;
-
-            std::iota(order.begin(), order.end(), 0);
-            std::stable_sort(order.begin(), order.end(), [&](int a, int bb) {
-                return f[static_cast<std::size_t>(a)] < f[static_cast<std::size_t>(bb)];
-            });
-
-            Eigen::VectorXd y_w = Eigen::VectorXd::Zero(n);
-            for (int i = 0; i < mu; ++i)
-                y_w += w[i] * y.col(order[static_cast<std::size_t>(i)]);
-            m += sigma * y_w;
-
-            p_s = (1.0 - c_s) * p_s + std::sqrt(c_s * (2.0 - c_s) * mu_eff) * (inv_sqrt_c * y_w);
-            const double ps_norm = p_s.norm();
-            const double h_s_threshold =
-                (1.4 + 2.0 / (dn + 1.0)) * chi_n *
-                std::sqrt(1.0 - std::pow(1.0 - c_s, 2.0 * static_cast<double>(generation)));
-            const bool h_s = ps_norm < h_s_threshold;
-            p_c = (1.0 - c_c) * p_c + (h_s ? std::sqrt(c_c * (2.0 - c_c) * mu_eff) : 0.0) * y_w;
-
-            Eigen::MatrixXd rank_mu = Eigen::MatrixXd::Zero(n, n);
-            for (int i = 0; i < mu; ++i) {
-                const auto col = y.col(order[static_cast<std::size_t>(i)]);
-                rank_mu.noalias() += w[i] * col * col.transpose();
-            }
-            const double delta_h = h_s ? 0.0 : c_c * (2.0 - c_c);
-            c = (1.0 + c_1 * delta_h - c_1 - c_mu) * c + c_1 * p_c * p_c.transpose() + c_mu * rank_mu;
-            sigma *= std::exp((c_s / d_s) * (ps_norm / chi_n - 1.0));
-
-            if (generation % eigen_gap == 0) {
-                c = 0.5 * (c + c.transpose()).eval();
-                solver.compute(c);
-                const Eigen::VectorXd eig = solver.eigenvalues().cwiseMax(1e-300);
-                b = solver.eigenvectors();
-                diag_d = eig.cwiseSqrt();
-                inv_sqrt_c = b * diag_d.cwiseInverse().asDiagonal() * b.transpose();
-            }
-
-            // Stop criteria: end this run (and restart, if restarts are on).
-            best_history.push_back(f[static_cast<std::size_t>(order[0])]);
-            if (best_history.size() > history_length)
-                best_history.pop_front();
-            const auto [lo_f, hi_f] = std::minmax_element(f.begin(), f.end());
-            const auto [lo_h, hi_h] = std::minmax_element(best_history.begin(), best_history.end());
-            const bool tol_fun = best_history.size() == history_length &&
-                                 std::max(*hi_f, *hi_h) - std::min(*lo_f, *lo_h) < 1e-12;
-            const bool tol_x = (sigma * p_c.cwiseAbs().array() < 1e-12 * sigma0_).all() &&
-                               (sigma * c.diagonal().cwiseSqrt().array() < 1e-12 * sigma0_).all();
-            const double max_d = diag_d.maxCoeff(), min_d = diag_d.minCoeff();
-            const bool ill_conditioned = max_d > 1e7 * min_d;
-            const Eigen::Index axis = static_cast<Eigen::Index>(generation % n);
-            const bool no_effect_axis =
-                ((m + 0.1 * sigma * diag_d[axis] * b.col(axis)).array() == m.array()).all();
-            const bool no_effect_coord =
-                ((m.array() + 0.2 * sigma * c.diagonal().cwiseSqrt().array()) == m.array()).any();
-            if (tol_fun || tol_x || ill_conditioned || no_effect_axis || no_effect_coord ||
-                !std::isfinite(sigma) || sigma > 1e6 || generation >= settings.max_generations)
-                return;
         }
     }
 
@@ -258,7 +116,7 @@ Restarts restarts_from(const std::string& name) {
 void register_cmaes(AlgorithmRegistry& registry) {
     registry.add(
         {"cmaes",
-         1,
+         2,
          "CMA-ES (mu/mu_w, lambda) with rank-one and rank-mu updates and CSA, IPOP or BIPOP restarts; "
          "lambda evaluations per iteration",
          "Hansen (2016), The CMA Evolution Strategy: A Tutorial, arXiv:1604.00772; IPOP: Auger and Hansen "
