@@ -1,5 +1,5 @@
-// The compressed data archives the executable carries (problems/cec/data/cec<year>.tar.xz, embedded
-// by cec_archives.cpp). Only cec_data.cpp reads them.
+// The data archives the executable carries (problems/cec/data/cec<year>.tar, each member
+// compressed alone by xz; embedded by cec_archives.cpp). Only cec_data.cpp reads them.
 #pragma once
 
 #include <span>

@@ -1,4 +1,5 @@
-// Decoding the embedded archives (libarchive: xz and tar) and parsing the official data files.
+// Reading the embedded archives (libarchive: a tar of files each compressed by xz) and parsing the
+// official data files.
 #include "problems/cec/cec_data.hpp"
 
 #include <algorithm>
@@ -14,21 +15,48 @@
 namespace mhb::cec {
 namespace {
 
-// Every file of one suite's archive, by its name without the "input_data/" folder.
-using Members = std::map<std::string, std::string, std::less<>>;
+// Every file of one suite's archive, by its name without the "input_data/" folder and the ".xz":
+// the file's xz-compressed bytes (each file is compressed alone, scripts/pack-cec-data.sh).
+using CompressedMembers = std::map<std::string, std::string, std::less<>>;
 
-Members decode_archive(Suite suite) {
-    const auto bytes = embedded_archive(suite);
-    const std::string what = std::string(suite_name(suite)) + " data archive: ";
-    // The reader is freed on every path out of this function.
-    std::unique_ptr<archive, int (*)(archive*)> reader(archive_read_new(), archive_read_free);
+using ArchiveReader = std::unique_ptr<archive, int (*)(archive*)>;
+
+ArchiveReader open_reader(const void* bytes, std::size_t size, bool tar, const std::string& what) {
+    // The reader is freed on every path out of its user.
+    ArchiveReader reader(archive_read_new(), archive_read_free);
     if (!reader)
         throw std::runtime_error(what + "libarchive could not allocate a reader");
-    archive_read_support_filter_xz(reader.get());
-    archive_read_support_format_tar(reader.get());
-    if (archive_read_open_memory(reader.get(), bytes.data(), bytes.size()) != ARCHIVE_OK)
+    if (tar) {
+        archive_read_support_format_tar(reader.get());
+    } else {
+        archive_read_support_filter_xz(reader.get());
+        archive_read_support_format_raw(reader.get());
+    }
+    if (archive_read_open_memory(reader.get(), bytes, size) != ARCHIVE_OK)
         throw std::runtime_error(what + archive_error_string(reader.get()));
-    Members members;
+    return reader;
+}
+
+// The current entry's data, all of it (`size` bytes when the header says, else to its end).
+std::string read_entry(archive* reader, const std::string& what, const std::string& name) {
+    std::string content;
+    char buffer[1 << 16];
+    for (;;) {
+        const auto read = archive_read_data(reader, buffer, sizeof buffer);
+        if (read < 0)
+            throw std::runtime_error(what + "cannot read " + name + ": " + archive_error_string(reader));
+        if (read == 0)
+            return content;
+        content.append(buffer, static_cast<std::size_t>(read));
+    }
+}
+
+// The tar's members, still compressed: reading the index costs no decompression.
+CompressedMembers index_archive(Suite suite) {
+    const auto bytes = embedded_archive(suite);
+    const std::string what = std::string(suite_name(suite)) + " data archive: ";
+    const ArchiveReader reader = open_reader(bytes.data(), bytes.size(), true, what);
+    CompressedMembers members;
     archive_entry* entry = nullptr;
     int status = ARCHIVE_OK;
     while ((status = archive_read_next_header(reader.get(), &entry)) == ARCHIVE_OK) {
@@ -37,26 +65,35 @@ Members decode_archive(Suite suite) {
         std::string name = archive_entry_pathname(entry);
         if (const auto slash = name.rfind('/'); slash != std::string::npos)
             name.erase(0, slash + 1);
-        std::string content(static_cast<std::size_t>(archive_entry_size(entry)), '\0');
-        const auto read = archive_read_data(reader.get(), content.data(), content.size());
-        if (read < 0 || static_cast<std::size_t>(read) != content.size())
-            throw std::runtime_error(what + "cannot read " + name + ": " +
-                                     (read < 0 ? archive_error_string(reader.get()) : "short read"));
-        members.emplace(std::move(name), std::move(content));
+        if (!name.ends_with(".xz"))
+            throw std::runtime_error(what + name + " is not an xz-compressed member");
+        name.resize(name.size() - 3);
+        std::string compressed = read_entry(reader.get(), what, name);
+        members.emplace(std::move(name), std::move(compressed));
     }
     if (status != ARCHIVE_EOF)
         throw std::runtime_error(what + archive_error_string(reader.get()));
     return members;
 }
 
-// Decoded on first use, kept for the life of the process (about 40 MB of text for 2017).
-const Members& members(Suite suite) {
+// Indexed on first use and kept (3.2 MB for 2017); a file is decompressed only when asked for.
+const CompressedMembers& members(Suite suite) {
     if (suite == Suite::cec2017) {
-        static const Members decoded = decode_archive(Suite::cec2017);
-        return decoded;
+        static const CompressedMembers indexed = index_archive(Suite::cec2017);
+        return indexed;
     }
-    static const Members decoded = decode_archive(Suite::cec2022);
-    return decoded;
+    static const CompressedMembers indexed = index_archive(Suite::cec2022);
+    return indexed;
+}
+
+std::string decompress(Suite suite, const std::string& name, const std::string& compressed) {
+    const std::string what = std::string(suite_name(suite)) + " data archive: ";
+    const ArchiveReader reader = open_reader(compressed.data(), compressed.size(), false, what);
+    archive_entry* entry = nullptr;
+    if (archive_read_next_header(reader.get(), &entry) != ARCHIVE_OK)
+        throw std::runtime_error(what + "cannot decompress " + name + ": " +
+                                 archive_error_string(reader.get()));
+    return read_entry(reader.get(), what, name);
 }
 
 bool is_space(char c) {
@@ -149,8 +186,8 @@ std::shared_ptr<const DataFile> data_file(Suite suite, std::string_view file_nam
         throw std::invalid_argument(missing_message(suite, file_name));
     const std::lock_guard lock(mutex);
     auto& slot = parsed[{suite, member->first}];
-    if (!slot)
-        slot = parse(suite, member->first, member->second);
+    if (!slot) // the text is dropped once parsed: only the numbers are kept
+        slot = parse(suite, member->first, decompress(suite, member->first, member->second));
     return slot;
 }
 
@@ -161,12 +198,12 @@ std::vector<std::string> data_file_names(Suite suite) {
     return names; // a std::map iterates in sorted order
 }
 
-const std::string& data_file_bytes(Suite suite, std::string_view file_name) {
+std::string data_file_bytes(Suite suite, std::string_view file_name) {
     const auto& all = members(suite);
     const auto member = all.find(file_name);
     if (member == all.end())
         throw std::invalid_argument(missing_message(suite, file_name));
-    return member->second;
+    return decompress(suite, member->first, member->second);
 }
 
 std::vector<std::pair<std::string, std::string>> recorded_sha256(Suite suite) {

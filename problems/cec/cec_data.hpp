@@ -1,10 +1,11 @@
 // The official input data of the CEC 2017 and CEC 2022 bound-constrained suites (shift vectors,
 // rotation matrices, shuffle permutations), shipped inside the executable as the original files,
-// byte for byte, in one tar.xz per suite (problems/cec/data/, made by scripts/pack-cec-data.sh).
+// byte for byte, each compressed alone, in one tar per suite (problems/cec/data/, made by
+// scripts/pack-cec-data.sh).
 //
-// A suite's archive is decompressed the first time any of its files is asked for; each file is
-// parsed the first time it is asked for; both are then kept for the life of the process and shared
-// read-only by every problem and run. Everything here is thread-safe.
+// A suite's archive is indexed the first time any of its files is asked for; a file is decompressed
+// and parsed the first time it is asked for, and only its numbers are kept, for the life of the
+// process, shared read-only by every problem and run. Everything here is thread-safe.
 #pragma once
 
 #include <memory>
@@ -45,7 +46,8 @@ std::shared_ptr<const DataFile> data_file(Suite suite, std::string_view file_nam
 std::vector<std::string> data_file_names(Suite suite);
 
 // The original bytes of one file, exactly as published (CRLF kept): for the SHA-256 check.
-const std::string& data_file_bytes(Suite suite, std::string_view file_name);
+// Decompressed at each call, not kept.
+std::string data_file_bytes(Suite suite, std::string_view file_name);
 
 // The SHA-256 of every original file, as recorded when the archive was made
 // (problems/cec/data/SHA256SUMS, copied from ../shared/cec/SHA256SUMS): name -> hex digest.

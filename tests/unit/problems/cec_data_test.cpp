@@ -78,7 +78,7 @@ TEST(CecData, ParsesNumbersWithTheirLines) {
 }
 
 TEST(CecData, ParsedValuesEqualStrtodOfTheText) {
-    const std::string& text = data_file_bytes(Suite::cec2022, "M_1_D10.txt");
+    const std::string text = data_file_bytes(Suite::cec2022, "M_1_D10.txt");
     std::istringstream in(text);
     const auto parsed = data_file(Suite::cec2022, "M_1_D10.txt");
     std::string token;
