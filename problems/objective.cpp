@@ -68,17 +68,22 @@ std::string point_text(const Eigen::VectorXd& x) {
 } // namespace
 
 Objective::Objective(const Problem& problem, Budget budget, BoundPolicy policy, ObjectiveOptions options)
-    : problem_(problem), budget_(budget), policy_(policy), recorder_(options.record_best_x) {
+    : problem_(problem), budget_(budget), policy_(policy), dimension_(problem.dimension()),
+      box_(problem.bounds()),
+      evaluation_limit_(budget.max_evaluations.value_or(std::numeric_limits<std::int64_t>::max())),
+      iteration_limit_(budget.max_iterations.value_or(std::numeric_limits<std::int64_t>::max())),
+      recorder_(options.record_best_x) {
     budget_.validate();
     if (const auto opt = problem_.known_optimum())
         f_opt_ = opt->f;
+    minus_infinity_is_bad_ = f_opt_ && std::isfinite(*f_opt_);
     if (budget_.target_error && !f_opt_)
         throw std::invalid_argument("budget: a target needs a problem with a known optimum; '" +
                                     problem_.name() + "' has none");
 }
 
 void Objective::repair(Eigen::VectorXd& x) const {
-    const Box& box = problem_.bounds();
+    const Box& box = box_;
     switch (policy_) {
     case BoundPolicy::clamp:
         x = x.cwiseMax(box.lower).cwiseMin(box.upper);
@@ -108,7 +113,7 @@ void Objective::repair(Eigen::VectorXd& x) const {
 }
 
 void Objective::check_before_evaluation(const Eigen::VectorXd& x) const {
-    if (x.size() != problem_.dimension())
+    if (x.size() != dimension_)
         throw_wrong_size(problem_, x.size());
     if (exhausted())
         throw BudgetExhausted{};
@@ -117,17 +122,19 @@ void Objective::check_before_evaluation(const Eigen::VectorXd& x) const {
 double Objective::account(const Eigen::VectorXd& x, double f) {
     // +inf is a legal value, the worst there is. NaN is never one; nor is -inf below a finite
     // known minimum. Either fails the run, naming the evaluation and the point.
-    if (std::isnan(f) || (f == -std::numeric_limits<double>::infinity() && f_opt_ && std::isfinite(*f_opt_)))
+    if (std::isnan(f) || (f == -std::numeric_limits<double>::infinity() && minus_infinity_is_bad_))
+        [[unlikely]]
         throw_bad_value(problem_, f, evaluations_ + 1, x);
     ++evaluations_;
     const bool improved = f < best_f_;
-    if (improved || best_x_.size() == 0) {
+    if (improved || best_x_.size() == 0) [[unlikely]] {
         best_f_ = f;
         best_x_ = x;
+        // best_f changes only here, so the target is met here or never.
+        if (f_opt_ && budget_.target_error && !evaluations_to_target_ &&
+            best_f_ - *f_opt_ <= *budget_.target_error)
+            evaluations_to_target_ = evaluations_;
     }
-    if (f_opt_ && budget_.target_error && !evaluations_to_target_ &&
-        best_f_ - *f_opt_ <= *budget_.target_error)
-        evaluations_to_target_ = evaluations_;
     recorder_.evaluated(evaluations_, f, best_f_, improved);
     return f;
 }
@@ -150,7 +157,7 @@ void Objective::evaluate_batch(std::span<Eigen::VectorXd> x, std::span<double> f
     if ((batched || problem_.parallel_evaluation()) && x.size() > 1 && !exhausted()) {
         const auto room =
             static_cast<std::size_t>(std::min(remaining_evaluations(), static_cast<std::int64_t>(x.size())));
-        while (ahead < room && x[ahead].size() == problem_.dimension())
+        while (ahead < room && x[ahead].size() == dimension_)
             ++ahead;
     }
     if (ahead < 2) {
@@ -218,14 +225,6 @@ void Objective::end_iteration() {
 
 void Objective::record_iteration() {
     recorder_.iteration_ended(iterations_, evaluations_, best_f_, best_x_);
-}
-
-bool Objective::exhausted() const {
-    if (budget_.max_evaluations && evaluations_ >= *budget_.max_evaluations)
-        return true;
-    if (budget_.max_iterations && iterations_ >= *budget_.max_iterations)
-        return true;
-    return evaluations_to_target_.has_value();
 }
 
 std::int64_t Objective::remaining_evaluations() const {
