@@ -96,146 +96,196 @@ struct JsoSettings {
     double m_cr = 0.8;
 };
 
+// What each trial vector was made with (for the memory update of its success).
+struct JsoTrialParameters {
+    double cr;
+    double f;
+};
+
+// One jSO run: its population, memories and archive, and the steps of a generation.
+class JsoRun {
+public:
+    JsoRun(const JsoSettings& settings, Objective& objective, Rng& rng)
+        : s_(settings), objective_(objective), rng_(rng), h_(static_cast<std::size_t>(settings.memory)),
+          m_cr_(h_, settings.m_cr), m_f_(h_, settings.m_f) {
+        const auto dd = static_cast<double>(objective.dimension());
+        n_init_ = static_cast<std::size_t>(std::llround(s_.r_ninit * std::sqrt(dd) * std::log(dd)));
+        n_min_ = static_cast<std::size_t>(s_.n_min);
+        if (n_init_ < n_min_)
+            throw std::invalid_argument(
+                "jso: initial population round(r_ninit * sqrt(D) * ln(D)) = " + std::to_string(n_init_) +
+                " is smaller than n_min = " + std::to_string(n_min_) +
+                "; raise 'r_ninit' (D = 1 needs another method)");
+        max_nfe_ = shade::lpsr_max_evaluations(objective.budget(), static_cast<double>(n_init_),
+                                               static_cast<double>(n_min_));
+        archive_max_ = static_cast<std::size_t>(s_.r_arc * static_cast<double>(n_init_));
+        p_num_ = std::max<std::size_t>(
+            2, static_cast<std::size_t>(std::llround(s_.p_max * static_cast<double>(n_init_))));
+        v_.resize(objective.dimension());
+    }
+
+    void run() {
+        pop_ = random_population(objective_, rng_, n_init_);
+        objective_.initialised();
+        while (!objective_.exhausted()) {
+            make_trials();
+            // All trials come from the generation as it began: one batch, in index order. The
+            // Objective stops it exactly at the evaluation budget (BudgetExhausted ends the run).
+            objective_.evaluate_batch(trials_, f_trials_);
+            select_survivors();
+            update_memory();
+            reduce_population();
+            objective_.end_iteration();
+        }
+    }
+
+private:
+    // r uniform in the H slots (the last one fixed at 0.9), then CR and F with their stage limits.
+    JsoTrialParameters draw_parameters(double stage) {
+        const std::size_t r = rng_.below(h_);
+        const double mu_cr = r == h_ - 1 ? 0.9 : m_cr_[r];
+        const double mu_f = r == h_ - 1 ? 0.9 : m_f_[r];
+        double cr = mu_cr < 0.0 ? 0.0 : std::clamp(mu_cr + 0.1 * rng_.normal(), 0.0, 1.0);
+        if (stage < 0.25)
+            cr = std::max(cr, 0.7);
+        if (stage < 0.5)
+            cr = std::max(cr, 0.6);
+        double f = 0.0;
+        do {
+            f = mu_f + 0.1 * std::tan(std::numbers::pi * (rng_.uniform() - 0.5));
+        } while (f <= 0.0);
+        f = std::min(f, 1.0);
+        if (stage < 0.6)
+            f = std::min(f, 0.7);
+        return {cr, f};
+    }
+
+    // current-to-pbest-w/1 into v_: pbest among the best p_num (not i in the first half), r1 from
+    // the population without i, r2 from population + archive without i and r1.
+    void mutate(std::size_t i, double f, double fw_factor) {
+        const auto& x = pop_.x;
+        const std::size_t n = x.size();
+        std::size_t pbest = 0;
+        do {
+            pbest = order_[rng_.below(p_num_)];
+        } while (stage_ < 0.5 && pbest == i);
+        std::size_t r1 = 0;
+        do {
+            r1 = rng_.below(n);
+        } while (r1 == i);
+        std::size_t r2 = 0;
+        do {
+            r2 = rng_.below(n + archive_.size());
+        } while (r2 == i || r2 == r1);
+        const Eigen::VectorXd& x_r2 = r2 < n ? x[r2] : archive_[r2 - n];
+        v_ = x[i] + (fw_factor * f) * (x[pbest] - x[i]) + f * (x[r1] - x_r2);
+    }
+
+    void make_trials() {
+        const std::size_t n = pop_.x.size();
+        stage_ = std::min(1.0, static_cast<double>(objective_.evaluations()) / max_nfe_);
+        const double fw_factor = stage_ < 0.2 ? 0.7 : (stage_ < 0.4 ? 0.8 : 1.2);
+        order_ = pop_.ranking();
+        p_num_ = std::min(p_num_, n);
+        trials_.assign(n, Eigen::VectorXd());
+        f_trials_.assign(n, 0.0);
+        used_.assign(n, {});
+        for (std::size_t i = 0; i < n; ++i) {
+            used_[i] = draw_parameters(stage_);
+            mutate(i, used_[i].f, fw_factor);
+            trials_[i] = shade::binomial_crossover(pop_.x[i], v_, used_[i].cr, objective_.bounds(), rng_);
+        }
+    }
+
+    // A trial at least as good as its parent replaces it; a strictly better one archives the
+    // parent and records its CR, F and improvement.
+    void select_survivors() {
+        auto& x = pop_.x;
+        auto& fx = pop_.f;
+        s_cr_.clear();
+        s_f_.clear();
+        s_delta_.clear();
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            if (f_trials_[i] > fx[i])
+                continue;
+            if (f_trials_[i] < fx[i]) {
+                archive_parent(x[i]);
+                s_cr_.push_back(used_[i].cr);
+                s_f_.push_back(used_[i].f);
+                s_delta_.push_back(fx[i] - f_trials_[i]);
+            }
+            x[i] = std::move(trials_[i]);
+            fx[i] = f_trials_[i];
+        }
+    }
+
+    void archive_parent(const Eigen::VectorXd& parent) {
+        if (archive_max_ == 0)
+            return;
+        if (archive_.size() < archive_max_)
+            archive_.push_back(parent);
+        else
+            archive_[rng_.below(archive_max_)] = parent;
+    }
+
+    // Slot k becomes the average of its value and the weighted Lehmer mean of the successes.
+    void update_memory() {
+        if (s_f_.empty())
+            return;
+        const double mean_f = shade::weighted_lehmer_mean(s_f_, s_delta_);
+        // Every successful CR was 0: the code's mean is -1 (see the header).
+        const bool all_cr_zero = *std::max_element(s_cr_.begin(), s_cr_.end()) == 0.0;
+        const double mean_cr = all_cr_zero ? -1.0 : shade::weighted_lehmer_mean(s_cr_, s_delta_);
+        m_f_[k_memory_] = 0.5 * (mean_f + m_f_[k_memory_]);
+        m_cr_[k_memory_] = 0.5 * (mean_cr + m_cr_[k_memory_]);
+        k_memory_ = (k_memory_ + 1) % h_;
+    }
+
+    // Linear population size reduction from the evaluations spent; the archive and p follow.
+    void reduce_population() {
+        auto& x = pop_.x;
+        auto& fx = pop_.f;
+        const auto nfes = static_cast<double>(objective_.evaluations());
+        const std::size_t n_next = shade::lpsr_size(n_init_, n_min_, max_nfe_, nfes);
+        if (n_next >= x.size())
+            return;
+        while (x.size() > n_next) {
+            std::size_t worst = 0;
+            for (std::size_t j = 1; j < fx.size(); ++j)
+                if (fx[j] > fx[worst])
+                    worst = j;
+            x.erase(x.begin() + static_cast<std::ptrdiff_t>(worst));
+            fx.erase(fx.begin() + static_cast<std::ptrdiff_t>(worst));
+        }
+        archive_max_ = static_cast<std::size_t>(s_.r_arc * static_cast<double>(n_next));
+        if (archive_.size() > archive_max_)
+            archive_.resize(archive_max_);
+        const double p = s_.p_max * (1.0 - 0.5 * std::min(1.0, nfes / max_nfe_));
+        p_num_ =
+            std::max<std::size_t>(2, static_cast<std::size_t>(std::llround(p * static_cast<double>(n_next))));
+    }
+
+    const JsoSettings& s_;
+    Objective& objective_;
+    Rng& rng_;
+    std::size_t h_, n_init_ = 0, n_min_ = 0, k_memory_ = 0, archive_max_ = 0, p_num_ = 0;
+    double max_nfe_ = 0.0, stage_ = 0.0;
+    std::vector<double> m_cr_, m_f_;
+    Population pop_;
+    std::vector<Eigen::VectorXd> archive_, trials_;
+    std::vector<double> f_trials_, s_cr_, s_f_, s_delta_;
+    std::vector<JsoTrialParameters> used_;
+    std::vector<std::size_t> order_;
+    Eigen::VectorXd v_;
+};
+
 class Jso final : public Optimizer {
 public:
     explicit Jso(JsoSettings settings) : s_(settings) {}
 
     std::string name() const override { return "jso"; }
 
-    void run(Objective& objective, Rng& rng) const override {
-        const Eigen::Index d = objective.dimension();
-        const Box& box = objective.bounds();
-        const auto dd = static_cast<double>(d);
-        const auto n_init = static_cast<std::size_t>(std::llround(s_.r_ninit * std::sqrt(dd) * std::log(dd)));
-        const auto n_min = static_cast<std::size_t>(s_.n_min);
-        if (n_init < n_min)
-            throw std::invalid_argument(
-                "jso: initial population round(r_ninit * sqrt(D) * ln(D)) = " + std::to_string(n_init) +
-                " is smaller than n_min = " + std::to_string(n_min) +
-                "; raise 'r_ninit' (D = 1 needs another method)");
-        const double max_nfe = shade::lpsr_max_evaluations(objective.budget(), static_cast<double>(n_init),
-                                                           static_cast<double>(n_min));
-
-        Population pop = random_population(objective, rng, n_init);
-        auto& x = pop.x;
-        auto& fx = pop.f;
-        objective.initialised();
-
-        const auto h = static_cast<std::size_t>(s_.memory);
-        std::vector<double> m_cr(h, s_.m_cr), m_f(h, s_.m_f);
-        std::size_t k_memory = 0;
-        std::vector<Eigen::VectorXd> archive;
-        auto archive_max = static_cast<std::size_t>(s_.r_arc * static_cast<double>(n_init));
-        std::size_t p_num = std::max<std::size_t>(
-            2, static_cast<std::size_t>(std::llround(s_.p_max * static_cast<double>(n_init))));
-
-        std::vector<Eigen::VectorXd> trials;
-        std::vector<double> f_trials, cr_used, f_used, s_cr, s_f, s_delta;
-        std::vector<std::size_t> order;
-        Eigen::VectorXd v(d);
-        while (!objective.exhausted()) {
-            const std::size_t n = x.size();
-            const double stage = std::min(1.0, static_cast<double>(objective.evaluations()) / max_nfe);
-            const double fw_factor = stage < 0.2 ? 0.7 : (stage < 0.4 ? 0.8 : 1.2);
-            order = pop.ranking();
-            p_num = std::min(p_num, n);
-
-            trials.assign(n, Eigen::VectorXd());
-            f_trials.assign(n, 0.0);
-            cr_used.assign(n, 0.0);
-            f_used.assign(n, 0.0);
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::size_t r = rng.below(h);
-                const double mu_cr = r == h - 1 ? 0.9 : m_cr[r];
-                const double mu_f = r == h - 1 ? 0.9 : m_f[r];
-                double cr = mu_cr < 0.0 ? 0.0 : std::clamp(mu_cr + 0.1 * rng.normal(), 0.0, 1.0);
-                if (stage < 0.25)
-                    cr = std::max(cr, 0.7);
-                if (stage < 0.5)
-                    cr = std::max(cr, 0.6);
-                cr_used[i] = cr;
-                double f = 0.0;
-                do {
-                    f = mu_f + 0.1 * std::tan(std::numbers::pi * (rng.uniform() - 0.5));
-                } while (f <= 0.0);
-                f = std::min(f, 1.0);
-                if (stage < 0.6)
-                    f = std::min(f, 0.7);
-                f_used[i] = f;
-
-                std::size_t pbest = 0;
-                do {
-                    pbest = order[rng.below(p_num)];
-                } while (stage < 0.5 && pbest == i);
-                std::size_t r1 = 0;
-                do {
-                    r1 = rng.below(n);
-                } while (r1 == i);
-                std::size_t r2 = 0;
-                do {
-                    r2 = rng.below(n + archive.size());
-                } while (r2 == i || r2 == r1);
-                const Eigen::VectorXd& x_r2 = r2 < n ? x[r2] : archive[r2 - n];
-
-                v = x[i] + (fw_factor * f) * (x[pbest] - x[i]) + f * (x[r1] - x_r2);
-                trials[i] = shade::binomial_crossover(x[i], v, cr, box, rng);
-            }
-            // All trials come from the generation as it began: one batch, in index order. The
-            // Objective stops it exactly at the evaluation budget (BudgetExhausted ends the run).
-            objective.evaluate_batch(trials, f_trials);
-
-            s_cr.clear();
-            s_f.clear();
-            s_delta.clear();
-            for (std::size_t i = 0; i < n; ++i) {
-                if (f_trials[i] > fx[i])
-                    continue;
-                if (f_trials[i] < fx[i]) {
-                    if (archive_max > 0) {
-                        if (archive.size() < archive_max)
-                            archive.push_back(x[i]);
-                        else
-                            archive[rng.below(archive_max)] = x[i];
-                    }
-                    s_cr.push_back(cr_used[i]);
-                    s_f.push_back(f_used[i]);
-                    s_delta.push_back(fx[i] - f_trials[i]);
-                }
-                x[i] = std::move(trials[i]);
-                fx[i] = f_trials[i];
-            }
-            if (!s_f.empty()) {
-                const double mean_f = shade::weighted_lehmer_mean(s_f, s_delta);
-                // Every successful CR was 0: the code's mean is -1 (see the header).
-                const bool all_cr_zero = *std::max_element(s_cr.begin(), s_cr.end()) == 0.0;
-                const double mean_cr = all_cr_zero ? -1.0 : shade::weighted_lehmer_mean(s_cr, s_delta);
-                m_f[k_memory] = 0.5 * (mean_f + m_f[k_memory]);
-                m_cr[k_memory] = 0.5 * (mean_cr + m_cr[k_memory]);
-                k_memory = (k_memory + 1) % h;
-            }
-
-            // Linear population size reduction from the evaluations spent.
-            const auto nfes = static_cast<double>(objective.evaluations());
-            const std::size_t n_next = shade::lpsr_size(n_init, n_min, max_nfe, nfes);
-            if (n_next < n) {
-                while (x.size() > n_next) {
-                    std::size_t worst = 0;
-                    for (std::size_t j = 1; j < fx.size(); ++j)
-                        if (fx[j] > fx[worst])
-                            worst = j;
-                    x.erase(x.begin() + static_cast<std::ptrdiff_t>(worst));
-                    fx.erase(fx.begin() + static_cast<std::ptrdiff_t>(worst));
-                }
-                archive_max = static_cast<std::size_t>(s_.r_arc * static_cast<double>(n_next));
-                if (archive.size() > archive_max)
-                    archive.resize(archive_max);
-                const double p = s_.p_max * (1.0 - 0.5 * std::min(1.0, nfes / max_nfe));
-                p_num = std::max<std::size_t>(
-                    2, static_cast<std::size_t>(std::llround(p * static_cast<double>(n_next))));
-            }
-            objective.end_iteration();
-        }
-    }
+    void run(Objective& objective, Rng& rng) const override { JsoRun(s_, objective, rng).run(); }
 
 private:
     JsoSettings s_;
