@@ -36,136 +36,169 @@ struct LshadeSettings {
     long long memory = 6;
 };
 
+// One L-SHADE run: its population, memories and archive, and the steps of a generation.
+class LshadeRun {
+public:
+    LshadeRun(const LshadeSettings& settings, Objective& objective, Rng& rng)
+        : s_(settings), objective_(objective), rng_(rng), h_(static_cast<std::size_t>(settings.memory)),
+          m_cr_(h_, 0.5), m_f_(h_, 0.5), cr_terminal_(h_, false) {
+        n_init_ =
+            static_cast<std::size_t>(std::llround(s_.r_ninit * static_cast<double>(objective.dimension())));
+        n_min_ = static_cast<std::size_t>(s_.n_min);
+        if (n_init_ < n_min_)
+            throw std::invalid_argument(
+                "lshade: initial population round(r_ninit * D) = " + std::to_string(n_init_) +
+                " is smaller than n_min = " + std::to_string(n_min_) +
+                "; raise 'r_ninit' (the population is too small)");
+        max_nfe_ = shade::lpsr_max_evaluations(objective.budget(), static_cast<double>(n_init_),
+                                               static_cast<double>(n_min_));
+        archive_max_ = static_cast<std::size_t>(std::llround(s_.r_arc * static_cast<double>(n_init_)));
+        v_.resize(objective.dimension());
+    }
+
+    void run() {
+        pop_ = random_population(objective_, rng_, n_init_);
+        objective_.initialised();
+        while (!objective_.exhausted()) {
+            make_trials();
+            // Every trial is built from the generation as it began, so they are evaluated as one
+            // batch (in parallel for an expensive problem), in index order, before any selection.
+            objective_.evaluate_batch(trials_, f_trials_);
+            select_survivors();
+            update_memory();
+            reduce_population();
+            objective_.end_iteration();
+        }
+    }
+
+private:
+    // r uniform in the H slots; CR ~ N(M_CR, 0.1) clipped (0 once the slot is terminal), F ~
+    // Cauchy(M_F, 0.1) redrawn while <= 0 and cut at 1; then current-to-pbest/1 into v_.
+    void make_trial(std::size_t i, std::size_t n_pbest) {
+        const auto& x = pop_.x;
+        const std::size_t n = x.size();
+        const std::size_t r = rng_.below(h_);
+        cr_used_[i] = cr_terminal_[r] ? 0.0 : std::clamp(m_cr_[r] + 0.1 * rng_.normal(), 0.0, 1.0);
+        double f = 0.0;
+        do {
+            f = m_f_[r] + 0.1 * std::tan(std::numbers::pi * (rng_.uniform() - 0.5));
+        } while (f <= 0.0);
+        f_used_[i] = std::min(f, 1.0);
+
+        const Eigen::VectorXd& pbest = x[order_[rng_.below(n_pbest)]];
+        std::size_t r1 = 0;
+        do {
+            r1 = rng_.below(n);
+        } while (r1 == i);
+        std::size_t r2 = 0;
+        do {
+            r2 = rng_.below(n + archive_.size());
+        } while (r2 == i || r2 == r1);
+        const Eigen::VectorXd& x_r2 = r2 < n ? x[r2] : archive_[r2 - n];
+
+        const double fi = f_used_[i];
+        v_ = x[i] + fi * (pbest - x[i]) + fi * (x[r1] - x_r2);
+        trials_[i] = shade::binomial_crossover(x[i], v_, cr_used_[i], objective_.bounds(), rng_);
+    }
+
+    void make_trials() {
+        const std::size_t n = pop_.x.size();
+        order_ = pop_.ranking();
+        const std::size_t n_pbest = std::max<std::size_t>(
+            2, static_cast<std::size_t>(std::llround(s_.p_best * static_cast<double>(n))));
+        trials_.assign(n, Eigen::VectorXd());
+        f_trials_.assign(n, 0.0);
+        cr_used_.assign(n, 0.0);
+        f_used_.assign(n, 0.0);
+        for (std::size_t i = 0; i < n; ++i)
+            make_trial(i, n_pbest);
+    }
+
+    // Selection, archive and the successful parameters.
+    void select_survivors() {
+        auto& x = pop_.x;
+        auto& fx = pop_.f;
+        s_cr_.clear();
+        s_f_.clear();
+        s_delta_.clear();
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            if (f_trials_[i] > fx[i])
+                continue;
+            if (f_trials_[i] < fx[i]) {
+                if (archive_max_ > 0) {
+                    if (archive_.size() < archive_max_)
+                        archive_.push_back(x[i]);
+                    else
+                        archive_[rng_.below(archive_.size())] = x[i];
+                }
+                s_cr_.push_back(cr_used_[i]);
+                s_f_.push_back(f_used_[i]);
+                s_delta_.push_back(fx[i] - f_trials_[i]);
+            }
+            x[i] = std::move(trials_[i]);
+            fx[i] = f_trials_[i];
+        }
+    }
+
+    void update_memory() {
+        if (s_f_.empty())
+            return;
+        const bool all_cr_zero = *std::max_element(s_cr_.begin(), s_cr_.end()) == 0.0;
+        if (cr_terminal_[k_memory_] || all_cr_zero)
+            cr_terminal_[k_memory_] = true;
+        else
+            m_cr_[k_memory_] = shade::weighted_lehmer_mean(s_cr_, s_delta_);
+        m_f_[k_memory_] = shade::weighted_lehmer_mean(s_f_, s_delta_);
+        k_memory_ = (k_memory_ + 1) % h_;
+    }
+
+    // Linear population size reduction: drop the worst, shrink the archive at random.
+    void reduce_population() {
+        auto& x = pop_.x;
+        auto& fx = pop_.f;
+        const std::size_t n_next =
+            shade::lpsr_size(n_init_, n_min_, max_nfe_, static_cast<double>(objective_.evaluations()));
+        if (n_next >= x.size())
+            return;
+        order_ = pop_.ranking();
+        std::vector<Eigen::VectorXd> kept_x(n_next);
+        std::vector<double> kept_f(n_next);
+        std::sort(order_.begin(), order_.begin() + static_cast<std::ptrdiff_t>(n_next)); // keep index order
+        for (std::size_t j = 0; j < n_next; ++j) {
+            kept_x[j] = std::move(x[order_[j]]);
+            kept_f[j] = fx[order_[j]];
+        }
+        x = std::move(kept_x);
+        fx = std::move(kept_f);
+        archive_max_ = static_cast<std::size_t>(std::llround(s_.r_arc * static_cast<double>(n_next)));
+        while (archive_.size() > archive_max_) {
+            const std::size_t drop = rng_.below(archive_.size());
+            archive_[drop] = std::move(archive_.back());
+            archive_.pop_back();
+        }
+    }
+
+    const LshadeSettings& s_;
+    Objective& objective_;
+    Rng& rng_;
+    std::size_t h_, n_init_ = 0, n_min_ = 0, k_memory_ = 0, archive_max_ = 0;
+    double max_nfe_ = 0.0;
+    std::vector<double> m_cr_, m_f_;
+    std::vector<bool> cr_terminal_;
+    Population pop_;
+    std::vector<Eigen::VectorXd> archive_, trials_;
+    std::vector<double> f_trials_, cr_used_, f_used_, s_cr_, s_f_, s_delta_;
+    std::vector<std::size_t> order_;
+    Eigen::VectorXd v_;
+};
+
 class Lshade final : public Optimizer {
 public:
     explicit Lshade(LshadeSettings settings) : s_(settings) {}
 
     std::string name() const override { return "lshade"; }
 
-    void run(Objective& objective, Rng& rng) const override {
-        const Eigen::Index d = objective.dimension();
-        const Box& box = objective.bounds();
-        const auto n_init = static_cast<std::size_t>(std::llround(s_.r_ninit * static_cast<double>(d)));
-        const auto n_min = static_cast<std::size_t>(s_.n_min);
-        if (n_init < n_min)
-            throw std::invalid_argument(
-                "lshade: initial population round(r_ninit * D) = " + std::to_string(n_init) +
-                " is smaller than n_min = " + std::to_string(n_min) +
-                "; raise 'r_ninit' (the population is too small)");
-        const double max_nfe = shade::lpsr_max_evaluations(objective.budget(), static_cast<double>(n_init),
-                                                           static_cast<double>(n_min));
-
-        Population pop = random_population(objective, rng, n_init);
-        auto& x = pop.x;
-        auto& fx = pop.f;
-        objective.initialised();
-
-        const auto h = static_cast<std::size_t>(s_.memory);
-        std::vector<double> m_cr(h, 0.5), m_f(h, 0.5);
-        std::vector<bool> cr_terminal(h, false);
-        std::size_t k_memory = 0;
-        std::vector<Eigen::VectorXd> archive;
-        std::size_t archive_max =
-            static_cast<std::size_t>(std::llround(s_.r_arc * static_cast<double>(n_init)));
-
-        std::vector<Eigen::VectorXd> trials;
-        std::vector<double> f_trials, cr_used, f_used, s_cr, s_f, s_delta;
-        std::vector<std::size_t> order;
-        Eigen::VectorXd v(d);
-        while (!objective.exhausted()) {
-            const std::size_t n = x.size();
-            order = pop.ranking();
-            const std::size_t n_pbest = std::max<std::size_t>(
-                2, static_cast<std::size_t>(std::llround(s_.p_best * static_cast<double>(n))));
-
-            trials.assign(n, Eigen::VectorXd());
-            f_trials.assign(n, 0.0);
-            cr_used.assign(n, 0.0);
-            f_used.assign(n, 0.0);
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::size_t r = rng.below(h);
-                cr_used[i] = cr_terminal[r] ? 0.0 : std::clamp(m_cr[r] + 0.1 * rng.normal(), 0.0, 1.0);
-                double f = 0.0;
-                do {
-                    f = m_f[r] + 0.1 * std::tan(std::numbers::pi * (rng.uniform() - 0.5));
-                } while (f <= 0.0);
-                f_used[i] = std::min(f, 1.0);
-
-                const Eigen::VectorXd& pbest = x[order[rng.below(n_pbest)]];
-                std::size_t r1 = 0;
-                do {
-                    r1 = rng.below(n);
-                } while (r1 == i);
-                std::size_t r2 = 0;
-                do {
-                    r2 = rng.below(n + archive.size());
-                } while (r2 == i || r2 == r1);
-                const Eigen::VectorXd& x_r2 = r2 < n ? x[r2] : archive[r2 - n];
-
-                const double fi = f_used[i];
-                v = x[i] + fi * (pbest - x[i]) + fi * (x[r1] - x_r2);
-                trials[i] = shade::binomial_crossover(x[i], v, cr_used[i], box, rng);
-            }
-            // Every trial is built from the generation as it began, so they are evaluated as one
-            // batch (in parallel for an expensive problem), in index order, before any selection.
-            objective.evaluate_batch(trials, f_trials);
-
-            // Selection, archive and the successful parameters.
-            s_cr.clear();
-            s_f.clear();
-            s_delta.clear();
-            for (std::size_t i = 0; i < n; ++i) {
-                if (f_trials[i] > fx[i])
-                    continue;
-                if (f_trials[i] < fx[i]) {
-                    if (archive_max > 0) {
-                        if (archive.size() < archive_max)
-                            archive.push_back(x[i]);
-                        else
-                            archive[rng.below(archive.size())] = x[i];
-                    }
-                    s_cr.push_back(cr_used[i]);
-                    s_f.push_back(f_used[i]);
-                    s_delta.push_back(fx[i] - f_trials[i]);
-                }
-                x[i] = std::move(trials[i]);
-                fx[i] = f_trials[i];
-            }
-            if (!s_f.empty()) {
-                const bool all_cr_zero = *std::max_element(s_cr.begin(), s_cr.end()) == 0.0;
-                if (cr_terminal[k_memory] || all_cr_zero)
-                    cr_terminal[k_memory] = true;
-                else
-                    m_cr[k_memory] = shade::weighted_lehmer_mean(s_cr, s_delta);
-                m_f[k_memory] = shade::weighted_lehmer_mean(s_f, s_delta);
-                k_memory = (k_memory + 1) % h;
-            }
-
-            // Linear population size reduction: drop the worst, shrink the archive at random.
-            const std::size_t n_next =
-                shade::lpsr_size(n_init, n_min, max_nfe, static_cast<double>(objective.evaluations()));
-            if (n_next < n) {
-                order = pop.ranking();
-                std::vector<Eigen::VectorXd> kept_x(n_next);
-                std::vector<double> kept_f(n_next);
-                std::sort(order.begin(),
-                          order.begin() + static_cast<std::ptrdiff_t>(n_next)); // keep index order
-                for (std::size_t j = 0; j < n_next; ++j) {
-                    kept_x[j] = std::move(x[order[j]]);
-                    kept_f[j] = fx[order[j]];
-                }
-                x = std::move(kept_x);
-                fx = std::move(kept_f);
-                archive_max = static_cast<std::size_t>(std::llround(s_.r_arc * static_cast<double>(n_next)));
-                while (archive.size() > archive_max) {
-                    const std::size_t drop = rng.below(archive.size());
-                    archive[drop] = std::move(archive.back());
-                    archive.pop_back();
-                }
-            }
-            objective.end_iteration();
-        }
-    }
+    void run(Objective& objective, Rng& rng) const override { LshadeRun(s_, objective, rng).run(); }
 
 private:
     LshadeSettings s_;
