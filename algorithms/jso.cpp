@@ -169,14 +169,7 @@ private:
         do {
             pbest = order_[rng_.below(p_num_)];
         } while (stage_ < 0.5 && pbest == i);
-        std::size_t r1 = 0;
-        do {
-            r1 = rng_.below(n);
-        } while (r1 == i);
-        std::size_t r2 = 0;
-        do {
-            r2 = rng_.below(n + archive_.size());
-        } while (r2 == i || r2 == r1);
+        const auto [r1, r2] = shade::draw_r1_r2(rng_, i, n, archive_.size());
         const Eigen::VectorXd& x_r2 = r2 < n ? x[r2] : archive_[r2 - n];
         v_ = x[i] + (fw_factor * f) * (x[pbest] - x[i]) + f * (x[r1] - x_r2);
     }

@@ -86,14 +86,7 @@ private:
         f_used_[i] = std::min(f, 1.0);
 
         const Eigen::VectorXd& pbest = x[order_[rng_.below(n_pbest)]];
-        std::size_t r1 = 0;
-        do {
-            r1 = rng_.below(n);
-        } while (r1 == i);
-        std::size_t r2 = 0;
-        do {
-            r2 = rng_.below(n + archive_.size());
-        } while (r2 == i || r2 == r1);
+        const auto [r1, r2] = shade::draw_r1_r2(rng_, i, n, archive_.size());
         const Eigen::VectorXd& x_r2 = r2 < n ? x[r2] : archive_[r2 - n];
 
         const double fi = f_used_[i];

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "problems/core/rng.hpp"
@@ -68,6 +69,22 @@ inline Eigen::VectorXd binomial_crossover(const Eigen::VectorXd& parent, const E
         u[k] = value;
     }
     return u;
+}
+
+// current-to-pbest/1's other two indices for target i in a population of n with an archive of
+// `archive_size`: r1 uniform in the population without i, r2 uniform in population + archive
+// (indices n and up are the archive's) without i and r1. Drawn in this order, r1 first.
+inline std::pair<std::size_t, std::size_t> draw_r1_r2(Rng& rng, std::size_t i, std::size_t n,
+                                                      std::size_t archive_size) {
+    std::size_t r1 = 0;
+    do {
+        r1 = rng.below(n);
+    } while (r1 == i);
+    std::size_t r2 = 0;
+    do {
+        r2 = rng.below(n + archive_size);
+    } while (r2 == i || r2 == r1);
+    return {r1, r2};
 }
 
 } // namespace mhb::shade
