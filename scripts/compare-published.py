@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
-"""Compare an mhbench study's final CEC 2017 errors with an algorithm's published runs.
+"""Compare an mhbench study's final CEC 2017 or CEC 2022 errors with an algorithm's published runs.
 
     python3 scripts/compare-published.py STUDY_DIR PUBLISHED_CSV [--algorithm LABEL] [--alpha 0.05]
 
 STUDY_DIR is an mhbench study directory (its runs.csv: one row per run, with algorithm, problem
 such as `cec2017:f=5,dim=10`, and error = best_f - f_opt). PUBLISHED_CSV has the columns
-function,run,error (tests/data/published/cec2017/, e.g. jso_D10.csv: the last row of the authors'
-result files, the error after MaxFES evaluations). The dimension compared is the published file's
-name `_D<dim>` (or --dim). Following the CEC 2017 protocol, errors below 1e-8 count as 0 on both
-sides, and F2 is left out (the organisers excluded it). The published files print errors with 6
+function,run,error (tests/data/published/cec2017/ or cec2022/, e.g. jso_D10.csv: the error after
+MaxFES evaluations in the authors' result files). The suite is the published file's folder
+(cec2017 or cec2022, or --suite) and the dimension its name's `_D<dim>` (or --dim). Errors below
+1e-8 count as 0 on both sides; for CEC 2017 F2 is left out (the organisers excluded it), for CEC 2022
+nothing is. The published files print errors with 6
 significant digits (the C++ stream default the authors' code wrote them with), so mhbench's errors
 are rounded to as many digits (--digits) before they are compared: many runs of the hybrid and
 composition functions end at the same local optimum, and unrounded values would turn the
@@ -17,7 +18,7 @@ published ties into spurious rank differences.
 Per function: the two medians, the p-value of a two-sided Wilcoxon rank-sum (Mann-Whitney) test
 and a verdict at level alpha: "better" or "worse" (mhbench's errors are significantly lower or
 higher, judged by the mean ranks), else "equal". The test uses the normal approximation with a
-correction for ties and no continuity correction, which is accurate enough for n = 51 per side
+correction for ties and no continuity correction, which is accurate enough for n = 51 (or 30) per side
 (exact tables are for small samples). Where both samples are all equal (e.g. all 0) the p-value
 is 1. Totals follow, with the number of functions expected to differ by chance alone if the two
 implementations were the same: alpha x functions compared.
@@ -34,7 +35,8 @@ import statistics
 import sys
 
 THRESHOLD = 1e-8
-EXCLUDED = {2}
+EXCLUDED = {"cec2017": {2}, "cec2022": set()}
+TITLES = {"cec2017": "CEC 2017", "cec2022": "CEC 2022"}
 
 
 def clean(error, digits=None):
@@ -76,13 +78,13 @@ def rank_sum_test(a, b):
     return min(1.0, p), mean_rank_a - mean_rank_b
 
 
-def read_study(study_dir, dim, algorithm, digits):
+def read_study(study_dir, suite, dim, algorithm, digits):
     path = os.path.join(study_dir, "runs.csv")
     errors = {}
     labels = set()
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
-            m = re.match(r"cec2017:(.*)$", row["problem"])
+            m = re.match(suite + r":(.*)$", row["problem"])
             if not m:
                 continue
             params = dict(kv.split("=", 1) for kv in m.group(1).split(",") if "=" in kv)
@@ -113,6 +115,8 @@ def main():
     parser.add_argument("published_csv")
     parser.add_argument("--algorithm", help="the study's algorithm label (needed if it has several)")
     parser.add_argument("--dim", type=int, help="dimension (default: _D<dim> in the published file's name)")
+    parser.add_argument("--suite", choices=sorted(TITLES),
+                        help="benchmark suite (default: the published file's folder, cec2017 or cec2022)")
     parser.add_argument("--alpha", type=float, default=0.05)
     parser.add_argument("--digits", type=int, default=6,
                         help="significant digits mhbench's errors are rounded to, as published (0: none)")
@@ -125,14 +129,21 @@ def main():
             sys.exit("no _D<dim> in the published file's name; give --dim")
         dim = int(m.group(1))
 
-    ours = read_study(args.study_dir, dim, args.algorithm, args.digits)
+    suite = args.suite
+    if suite is None:
+        suite = os.path.basename(os.path.dirname(os.path.abspath(args.published_csv)))
+        if suite not in TITLES:
+            sys.exit("the published file is not in a cec2017/ or cec2022/ folder; give --suite")
+    excluded = EXCLUDED[suite]
+
+    ours = read_study(args.study_dir, suite, dim, args.algorithm, args.digits)
     theirs = read_published(args.published_csv)
-    functions = sorted(f for f in set(ours) & set(theirs) if f not in EXCLUDED)
-    missing = sorted(f for f in set(theirs) - set(ours) if f not in EXCLUDED)
+    functions = sorted(f for f in set(ours) & set(theirs) if f not in excluded)
+    missing = sorted(f for f in set(theirs) - set(ours) if f not in excluded)
     if not functions:
         sys.exit("no function in common")
 
-    print(f"CEC 2017, D = {dim}: mhbench ({args.study_dir}) vs published ({args.published_csv})")
+    print(f"{TITLES[suite]}, D = {dim}: mhbench ({args.study_dir}) vs published ({args.published_csv})")
     print(f"errors < {THRESHOLD:g} counted as 0; two-sided Wilcoxon rank-sum, normal approximation with "
           f"tie correction, alpha = {args.alpha:g}; mhbench's errors rounded to "
           f"{args.digits or 'all'} significant digits as published")
