@@ -10,6 +10,7 @@ void register_spso2011(AlgorithmRegistry& registry);
 void register_de(AlgorithmRegistry& registry);
 void register_lshade(AlgorithmRegistry& registry);
 void register_jso(AlgorithmRegistry& registry);
+void register_lshade_cnepsin(AlgorithmRegistry& registry);
 void register_cmaes(AlgorithmRegistry& registry);
 void register_etlbo(AlgorithmRegistry& registry);
 void register_jaya(AlgorithmRegistry& registry);
@@ -25,6 +26,7 @@ void register_builtin_algorithms(AlgorithmRegistry& registry) {
     register_de(registry);
     register_lshade(registry);
     register_jso(registry);
+    register_lshade_cnepsin(registry);
     register_cmaes(registry);
     register_etlbo(registry);
     register_jaya(registry);

@@ -51,6 +51,8 @@ const std::vector<std::string>& batching_specs() {
         "lshade",
         "jso",
         "jso:r_ninit=3,H=2",
+        "lshade-cnepsin",
+        "lshade-cnepsin:pc=1,r_ninit=3,LP=2",
         "jaya:np=13",
         "pso",
         "pso:np=9,r=learner,vmax=0.2",
