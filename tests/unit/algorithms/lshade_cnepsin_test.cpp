@@ -29,7 +29,7 @@ TEST(LshadeCnEpSin, ListsThePublishedDefaults) {
     const auto& entry = builtin_algorithms().find("lshade-cnepsin");
     EXPECT_EQ(entry.version, 1);
     EXPECT_NE(entry.reference.find("Awad"), std::string::npos);
-    EXPECT_EQ(entry.parameters.size(), 11u);
+    EXPECT_EQ(entry.parameters.size(), 12u);
     EXPECT_DOUBLE_EQ(std::stod(cnepsin_parameter("r_ninit").default_value), 18.0);
     EXPECT_EQ(cnepsin_parameter("n_min").default_value, "4");
     EXPECT_DOUBLE_EQ(std::stod(cnepsin_parameter("r_arc").default_value), 1.4);
@@ -41,7 +41,8 @@ TEST(LshadeCnEpSin, ListsThePublishedDefaults) {
     EXPECT_DOUBLE_EQ(std::stod(cnepsin_parameter("pc").default_value), 0.4);
     EXPECT_DOUBLE_EQ(std::stod(cnepsin_parameter("ps").default_value), 0.5);
     EXPECT_EQ(cnepsin_parameter("LP").default_value, "20");
-    EXPECT_DOUBLE_EQ(cnepsin_parameter("n_min").min, 4.0); // current-to-pbest/1 needs four
+    EXPECT_EQ(cnepsin_parameter("bounds").default_value, "clamp"); // the code's is none: see the header
+    EXPECT_DOUBLE_EQ(cnepsin_parameter("n_min").min, 4.0);         // current-to-pbest/1 needs four
 }
 
 TEST(LshadeCnEpSin, InitialPopulationIs18D) {
