@@ -92,9 +92,12 @@
 // published F4, F25 (D = 30) and F27 (D = 10) errors come from points outside the competition's box.
 // F6 at D = 30 is not explained: 5 of 51 runs here end above 1e-8 (four at the same 1.3687361e-07;
 // 9 with bounds = none) where all 51 published are 0; the t-test flags it only because the
-// published std is 0. Open leads: that error repeated across runs (one point where the search
-// stalls: problems/cec's F6 against the organisers' code?), and the end of a run (the code does
-// not cut its last generation and evaluates all of it).
+// published std is 0. The stalled runs (best_x in runs.csv) have every coordinate at the optimum
+// but one, 2.6e-5 off (x_3 = -34.673900 for -34.673926): F6 is Schaffer's F7 on x - o
+// (problems/cec/cec2017.cpp), whose sin(50 s^0.2) ripples make tiny local minima near the optimum,
+// and the final few individuals share that coordinate. Open leads: why the authors' runs escape
+// them (the end of a run: the code does not cut its last generation and evaluates all of it; the
+// eigenbasis crossover with SEL = 2 at N = 4), and a rank-sum test if the runs are ever found.
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
