@@ -11,6 +11,7 @@ void register_de(AlgorithmRegistry& registry);
 void register_lshade(AlgorithmRegistry& registry);
 void register_jso(AlgorithmRegistry& registry);
 void register_nl_shade_lbc(AlgorithmRegistry& registry);
+void register_lshade_cnepsin(AlgorithmRegistry& registry);
 void register_cmaes(AlgorithmRegistry& registry);
 void register_etlbo(AlgorithmRegistry& registry);
 void register_jaya(AlgorithmRegistry& registry);
@@ -27,6 +28,7 @@ void register_builtin_algorithms(AlgorithmRegistry& registry) {
     register_lshade(registry);
     register_jso(registry);
     register_nl_shade_lbc(registry);
+    register_lshade_cnepsin(registry);
     register_cmaes(registry);
     register_etlbo(registry);
     register_jaya(registry);

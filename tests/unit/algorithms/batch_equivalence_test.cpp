@@ -51,6 +51,8 @@ const std::vector<std::string>& batching_specs() {
         "lshade",
         "jso",
         "jso:r_ninit=3,H=2",
+        "lshade-cnepsin",
+        "lshade-cnepsin:pc=1,r_ninit=3,LP=2",
         "nl-shade-lbc",
         "nl-shade-lbc:r_ninit=3,r_h=1",
         "jaya:np=13",

@@ -17,23 +17,6 @@
 namespace mhb::test {
 namespace {
 
-// Evaluations charged by each iteration after the initialisation (= the population size N_G).
-std::vector<std::int64_t> jso_generation_sizes(const Outcome& out) {
-    std::vector<std::int64_t> sizes;
-    for (std::size_t i = 1; i < out.iterations_trace.size(); ++i)
-        sizes.push_back(out.iterations_trace[i].evaluations - out.iterations_trace[i - 1].evaluations);
-    return sizes;
-}
-
-// The population size after a generation that ended with `nfes` evaluations spent, from a
-// population of `n`: round((4 - N_init) / MAX_NFE nfes + N_init), not below 4, never growing.
-std::int64_t jso_planned_size(std::int64_t n, std::int64_t n_init, double max_nfe, std::int64_t nfes) {
-    const double planned =
-        std::round((4.0 - static_cast<double>(n_init)) / max_nfe * static_cast<double>(nfes) +
-                   static_cast<double>(n_init));
-    return std::min<std::int64_t>(n, std::max<std::int64_t>(4, static_cast<std::int64_t>(planned)));
-}
-
 const ParameterInfo& jso_parameter(const std::string& name) {
     for (const auto& p : builtin_algorithms().find("jso").parameters)
         if (p.name == name)
@@ -70,50 +53,11 @@ TEST(Jso, InitialPopulationIs25SqrtDLnD) {
 }
 
 TEST(Jso, PopulationFallsLinearlyWithTheEvaluationsToFourAtTheEndOfTheBudget) {
-    const auto sphere = builtin_problems().create("sphere:dim=10");
-    const std::int64_t budget = 20000;
-    const Outcome out = run("jso", *sphere, 4, evaluations(budget));
-    EXPECT_EQ(out.evaluations, budget);
-    const auto sizes = jso_generation_sizes(out);
-    ASSERT_GT(sizes.size(), 100u);
-    std::int64_t n = 182;
-    for (std::size_t g = 0; g < sizes.size(); ++g) {
-        // The iteration that the budget cut short is not in the trace: every step is a whole one.
-        EXPECT_EQ(sizes[g], n) << "generation " << g + 1;
-        EXPECT_GE(sizes[g], 4);
-        n = jso_planned_size(n, 182, static_cast<double>(budget), out.iterations_trace[g + 1].evaluations);
-    }
-    // It reaches N_min = 4 only at the very end: round(182 - 178 nfes / MAX) = 4 needs
-    // nfes >= MAX (1 - 0.5 / 178), the last 57 evaluations here.
-    EXPECT_EQ(sizes.back(), 4);
-    for (std::size_t g = 0; g < sizes.size(); ++g)
-        if (sizes[g] == 4) {
-            EXPECT_GE(out.iterations_trace[g].evaluations, budget - 57 - 4) << "generation " << g + 1;
-            break;
-        }
-    EXPECT_LT(budget - out.iterations_trace.back().evaluations, 4); // the cut generation had < 4 left
+    expect_lpsr_under_an_evaluation_budget("jso", 182, 4);
 }
 
 TEST(Jso, IterationBudgetDerivesMaxNfeSoThatTheReductionEndsAtTheLastGeneration) {
-    const auto sphere = builtin_problems().create("sphere:dim=10");
-    const std::int64_t generations = 200;
-    const Outcome out = run("jso", *sphere, 5, iterations(generations));
-    EXPECT_EQ(out.iterations, generations);
-    const auto sizes = jso_generation_sizes(out);
-    ASSERT_EQ(sizes.size(), static_cast<std::size_t>(generations));
-    // MAX_NFE = G (N_init - N_min) / ln(N_init / N_min), as for L-SHADE.
-    const double max_nfe = static_cast<double>(generations) * 178.0 / std::log(182.0 / 4.0);
-    std::int64_t n = 182;
-    std::int64_t spent = 182;
-    for (std::size_t g = 0; g < sizes.size(); ++g) {
-        EXPECT_EQ(sizes[g], n) << "generation " << g + 1;
-        spent += sizes[g];
-        n = jso_planned_size(n, 182, max_nfe, out.iterations_trace[g + 1].evaluations);
-    }
-    EXPECT_EQ(out.evaluations, spent); // nothing but the populations is charged
-    // Rounding leaves the last generations a little above or at N_min, not stuck far above it.
-    EXPECT_LE(sizes.back(), 12);
-    EXPECT_NEAR(static_cast<double>(out.evaluations), max_nfe, 0.05 * max_nfe);
+    expect_lpsr_under_an_iteration_budget("jso", 182, 5);
 }
 
 TEST(Jso, EvaluationBudgetIsChargedExactlyWhateverItsRemainder) {

@@ -1,8 +1,11 @@
-// Helpers for the tests of the paper's algorithms (TLBO, ITLBO, PSO): one run turned into a
-// comparable outcome, a non-separable test function, and a problem that records every point
-// it is asked to evaluate (so tests can check what an optimiser evaluated, in order).
+// Helpers for the tests of the paper's algorithms (TLBO, ITLBO, PSO) and of the L-SHADE family: one
+// run turned into a comparable outcome, the population sizes a run's iterations charged against
+// linear population size reduction, a non-separable test function, and a problem that records every
+// point it is asked to evaluate (so tests can check what an optimiser evaluated, in order).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <gtest/gtest.h>
 #include <string>
@@ -61,6 +64,84 @@ inline bool identical(const Outcome& a, const Outcome& b) {
             a.checkpoints[t].best_f != b.checkpoints[t].best_f)
             return false;
     return true;
+}
+
+// Evaluations charged by each iteration after the initialisation (for a population method whose
+// iteration evaluates its population once, the population size N_G).
+inline std::vector<std::int64_t> generation_sizes(const Outcome& out) {
+    std::vector<std::int64_t> sizes;
+    for (std::size_t i = 1; i < out.iterations_trace.size(); ++i)
+        sizes.push_back(out.iterations_trace[i].evaluations - out.iterations_trace[i - 1].evaluations);
+    return sizes;
+}
+
+// Linear population size reduction (L-SHADE and its descendants): the size after a generation that
+// ended with `nfes` evaluations spent, from a population of `n`:
+// round((4 - N_init) / MAX_NFE nfes + N_init), not below 4, never growing.
+inline std::int64_t lpsr_planned_size(std::int64_t n, std::int64_t n_init, double max_nfe,
+                                      std::int64_t nfes) {
+    const double planned =
+        std::round((4.0 - static_cast<double>(n_init)) / max_nfe * static_cast<double>(nfes) +
+                   static_cast<double>(n_init));
+    return std::min<std::int64_t>(n, std::max<std::int64_t>(4, static_cast<std::int64_t>(planned)));
+}
+
+// Every whole generation of `out` evaluated the population LPSR planned from N_init = n_init and
+// MAX_NFE = max_nfe (the iteration a budget cut short is not in the trace). Returns the sizes.
+inline std::vector<std::int64_t> expect_lpsr_schedule(const Outcome& out, std::int64_t n_init,
+                                                      double max_nfe) {
+    const auto sizes = generation_sizes(out);
+    std::int64_t n = n_init;
+    for (std::size_t g = 0; g < sizes.size(); ++g) {
+        EXPECT_EQ(sizes[g], n) << "generation " << g + 1;
+        EXPECT_GE(sizes[g], 4);
+        n = lpsr_planned_size(n, n_init, max_nfe, out.iterations_trace[g + 1].evaluations);
+    }
+    return sizes;
+}
+
+// `spec` (an L-SHADE-family method with N_init = n_init at D = 10) on the 10-D sphere with 20 000
+// evaluations: the budget is spent exactly, every whole generation has the size LPSR planned, and
+// N_min = 4 comes only at the very end: round(N_init - (N_init - 4) nfes / MAX) = 4 needs
+// nfes >= MAX (1 - 0.5 / (N_init - 4)), the last ceil(0.5 MAX / (N_init - 4)) evaluations.
+inline void expect_lpsr_under_an_evaluation_budget(const std::string& spec, std::int64_t n_init,
+                                                   std::uint64_t seed) {
+    const auto sphere = builtin_problems().create("sphere:dim=10");
+    const std::int64_t budget = 20000;
+    const Outcome out = run(spec, *sphere, seed, evaluations(budget));
+    EXPECT_EQ(out.evaluations, budget);
+    const auto sizes = expect_lpsr_schedule(out, n_init, static_cast<double>(budget));
+    ASSERT_GT(sizes.size(), 100u);
+    EXPECT_EQ(sizes.back(), 4);
+    const auto last = static_cast<std::int64_t>(
+        std::ceil(0.5 * static_cast<double>(budget) / static_cast<double>(n_init - 4)));
+    for (std::size_t g = 0; g < sizes.size(); ++g)
+        if (sizes[g] == 4) {
+            EXPECT_GE(out.iterations_trace[g].evaluations, budget - last - 4) << "generation " << g + 1;
+            break;
+        }
+    EXPECT_LT(budget - out.iterations_trace.back().evaluations, 4); // the cut generation had < 4 left
+}
+
+// `spec` on the 10-D sphere with 200 iterations: MAX_NFE is derived as for L-SHADE,
+// G (N_init - N_min) / ln(N_init / N_min), every generation has the size LPSR planned from it,
+// nothing but the populations is charged, and the last generations are at or a little above N_min.
+inline void expect_lpsr_under_an_iteration_budget(const std::string& spec, std::int64_t n_init,
+                                                  std::uint64_t seed) {
+    const auto sphere = builtin_problems().create("sphere:dim=10");
+    const std::int64_t generations = 200;
+    const Outcome out = run(spec, *sphere, seed, iterations(generations));
+    EXPECT_EQ(out.iterations, generations);
+    const auto n = static_cast<double>(n_init);
+    const double max_nfe = static_cast<double>(generations) * (n - 4.0) / std::log(n / 4.0);
+    const auto sizes = expect_lpsr_schedule(out, n_init, max_nfe);
+    ASSERT_EQ(sizes.size(), static_cast<std::size_t>(generations));
+    std::int64_t spent = n_init;
+    for (const std::int64_t size : sizes)
+        spent += size;
+    EXPECT_EQ(out.evaluations, spent);
+    EXPECT_LE(sizes.back(), 12);
+    EXPECT_NEAR(static_cast<double>(out.evaluations), max_nfe, 0.05 * max_nfe);
 }
 
 // Rosenbrock's valley, f(x) = sum 100 (x_{k+1} - x_k^2)^2 + (1 - x_k)^2 on [-5, 10]^D,
