@@ -74,7 +74,8 @@ void baseline_run(benchmark::State& state, const std::string& spec, int dimensio
 }
 
 const std::vector<std::string>& cec_baseline_specs() {
-    static const std::vector<std::string> specs = {"lshade", "jso", "cmaes", "cmaes:restarts=bipop"};
+    static const std::vector<std::string> specs = {"lshade",       "jso",   "lshade-cnepsin",
+                                                   "nl-shade-lbc", "cmaes", "cmaes:restarts=bipop"};
     return specs;
 }
 
