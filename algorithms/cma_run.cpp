@@ -54,7 +54,7 @@ public:
         c_.setIdentity(n_, n_);
         b_.setIdentity(n_, n_);
         diag_d_.setOnes(n_);
-        inv_sqrt_c_.setIdentity(n_, n_);
+        whitened_.resize(n_);
         z_.resize(n_, k_.lambda);
         steps_.resize(n_, k_.lambda);
         selected_.resize(n_, k_.mu);
@@ -143,7 +143,11 @@ private:
         y_w_.noalias() = selected_ * k_.weights;
         m_ += sigma_ * y_w_;
         p_s_ = (1.0 - k_.c_s) * p_s_;
-        p_s_.noalias() += std::sqrt(k_.c_s * (2.0 - k_.c_s) * k_.mu_eff) * (inv_sqrt_c_ * y_w_);
+        // C^(-1/2) y_w = B D^-1 B^T y_w as two matrix-vector products: O(n^2), where forming
+        // C^(-1/2) at each eigendecomposition would cost a matrix product, O(n^3).
+        whitened_.noalias() = b_.transpose() * y_w_;
+        whitened_.array() /= diag_d_.array();
+        p_s_.noalias() += std::sqrt(k_.c_s * (2.0 - k_.c_s) * k_.mu_eff) * (b_ * whitened_);
         ps_norm_ = p_s_.norm();
         const double h_s_threshold =
             (1.4 + 2.0 / (k_.dn + 1.0)) * k_.chi_n *
@@ -166,7 +170,6 @@ private:
         solver_.compute(c_);
         b_ = solver_.eigenvectors();
         diag_d_ = solver_.eigenvalues().cwiseMax(1e-300).cwiseSqrt();
-        inv_sqrt_c_.noalias() = b_ * diag_d_.cwiseInverse().asDiagonal() * b_.transpose();
         eigen_updated_at_ = static_cast<double>(evaluations_);
     }
 
@@ -204,7 +207,8 @@ private:
     std::deque<double> best_history_;
 
     Eigen::VectorXd m_, p_s_, p_c_, diag_d_, y_w_, candidate_, redrawn_;
-    Eigen::MatrixXd c_, b_, inv_sqrt_c_;
+    Eigen::MatrixXd c_, b_;
+    Eigen::VectorXd whitened_;                     // D^-1 B^T y_w
     Eigen::MatrixXd z_, steps_;                    // n x lambda
     Eigen::MatrixXd selected_, weighted_selected_; // n x mu: the best steps, and times their weights
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver_{};
