@@ -5,11 +5,11 @@
 // loop): the lambda steps are one product B (D Z) of the n x n eigenbasis with the n x lambda
 // normal draws; the weighted mean step and the rank-mu update are products with the n x mu matrix
 // of the selected steps. The eigendecomposition of C, O(n^3), is the run's largest cost; it is
-// postponed by Hansen's own rule in purecma.py (pycma): after at least
+// postponed by Hansen's rule in purecma.py, the minimal CMA-ES shipped with pycma: after at least
 // 0.5 lambda / (n (c_1 + c_mu)) evaluations since the last one ("0.5 is chosen such that eig takes
 // 2 times the time of tell in >= 20-D"), which keeps the cost per evaluation O(n^2) at every D.
-// (The tutorial's rule, every max(1, 1 / (10 n (c_1 + c_mu))) generations, decomposes at every
-// generation from about D = 10 on.)
+// (The tutorial's rule, which pycma's CMAEvolutionStrategy keeps, every max(1, 1 / (10 n (c_1 +
+// c_mu))) generations, decomposes at every generation from about D = 10 on: five times as often.)
 #include "algorithms/cma_run.hpp"
 
 #include <algorithm>
