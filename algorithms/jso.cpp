@@ -236,20 +236,11 @@ private:
 
     // Linear population size reduction from the evaluations spent; the archive and p follow.
     void reduce_population() {
-        auto& x = pop_.x;
-        auto& fx = pop_.f;
         const auto nfes = static_cast<double>(objective_.evaluations());
         const std::size_t n_next = shade::lpsr_size(n_init_, n_min_, max_nfe_, nfes);
-        if (n_next >= x.size())
+        if (n_next >= pop_.size())
             return;
-        while (x.size() > n_next) {
-            std::size_t worst = 0;
-            for (std::size_t j = 1; j < fx.size(); ++j)
-                if (fx[j] > fx[worst])
-                    worst = j;
-            x.erase(x.begin() + static_cast<std::ptrdiff_t>(worst));
-            fx.erase(fx.begin() + static_cast<std::ptrdiff_t>(worst));
-        }
+        shade::remove_worst(pop_, n_next, shade::WorstTie::first);
         archive_max_ = static_cast<std::size_t>(s_.r_arc * static_cast<double>(n_next));
         if (archive_.size() > archive_max_)
             archive_.resize(archive_max_);

@@ -270,18 +270,6 @@ void cnepsin_update_memory(CnEpSinMemory& m, const CnEpSinTrialParameters& s,
     m.k = (m.k + 1) % m.f.size();
 }
 
-// Removes the worst until `n_next` remain (the last of equal worst first); survivors keep order.
-void cnepsin_remove_worst(Population& pop, std::size_t n_next) {
-    while (pop.x.size() > n_next) {
-        std::size_t worst = 0;
-        for (std::size_t j = 1; j < pop.f.size(); ++j)
-            if (pop.f[j] >= pop.f[worst])
-                worst = j;
-        pop.x.erase(pop.x.begin() + static_cast<std::ptrdiff_t>(worst));
-        pop.f.erase(pop.f.begin() + static_cast<std::ptrdiff_t>(worst));
-    }
-}
-
 class LshadeCnEpSin final : public Optimizer {
 public:
     explicit LshadeCnEpSin(CnEpSinSettings settings) : s_(settings) {}
@@ -440,7 +428,7 @@ private:
             const std::size_t n_next = shade::lpsr_size(n_init, n_min, max_nfe, nfes);
             if (n_next >= pop.x.size())
                 return;
-            cnepsin_remove_worst(pop, n_next);
+            shade::remove_worst(pop, n_next, shade::WorstTie::last);
             archive_max = static_cast<std::size_t>(std::llround(s.r_arc * static_cast<double>(n_next)));
             cnepsin_shrink_archive(archive, archive_max, rng);
         }

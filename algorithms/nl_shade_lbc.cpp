@@ -100,6 +100,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/population.hpp"
+#include "algorithms/shade_steps.hpp"
 
 namespace mhb {
 namespace {
@@ -375,13 +376,7 @@ private:
         const auto n_next =
             std::min(st.pop.size(), static_cast<std::size_t>(std::clamp(planned, static_cast<double>(n_min),
                                                                         static_cast<double>(n_init))));
-        auto& x = st.pop.x;
-        auto& fx = st.pop.f;
-        while (x.size() > n_next) {
-            const auto worst = std::max_element(fx.begin(), fx.end()) - fx.begin();
-            x.erase(x.begin() + worst);
-            fx.erase(fx.begin() + worst);
-        }
+        shade::remove_worst(st.pop, n_next, shade::WorstTie::first);
         st.archive_max = std::max(n_min, static_cast<std::size_t>(std::max(0.0, planned) * s_.r_arc));
         if (st.archive.size() > st.archive_max) {
             st.archive.resize(st.archive_max);

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/population.hpp"
 #include "problems/core/rng.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem.hpp"
@@ -85,6 +86,22 @@ inline std::pair<std::size_t, std::size_t> draw_r1_r2(Rng& rng, std::size_t i, s
         r2 = rng.below(n + archive_size);
     } while (r2 == i || r2 == r1);
     return {r1, r2};
+}
+
+// Which of several equally worst individuals goes first when the population shrinks (the authors'
+// codes differ: jSO and NL-SHADE-LBC drop the first, LSHADE-cnEpSin the last).
+enum class WorstTie { first, last };
+
+// Removes the worst one by one until `n_next` remain; the survivors keep their order.
+inline void remove_worst(Population& pop, std::size_t n_next, WorstTie tie) {
+    while (pop.x.size() > n_next) {
+        std::size_t worst = 0;
+        for (std::size_t j = 1; j < pop.f.size(); ++j)
+            if (pop.f[j] > pop.f[worst] || (tie == WorstTie::last && pop.f[j] == pop.f[worst]))
+                worst = j;
+        pop.x.erase(pop.x.begin() + static_cast<std::ptrdiff_t>(worst));
+        pop.f.erase(pop.f.begin() + static_cast<std::ptrdiff_t>(worst));
+    }
 }
 
 } // namespace mhb::shade
