@@ -12,9 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/algorithm_registry.hpp"
-#include "algorithms/sampling.hpp"
 #include "problems/problem_registry.hpp"
+#include "tests/bench/overhead_support.hpp"
 
 namespace mhb {
 namespace {
@@ -32,45 +31,12 @@ const Problem& sphere_of(int dimension) {
     return dimension == 10 ? *d10 : dimension == 30 ? *d30 : *d100;
 }
 
-void per_evaluation_rate(benchmark::State& state, std::int64_t evaluations) {
-    state.counters["per_eval"] = benchmark::Counter(
-        static_cast<double>(evaluations), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-}
-
 void sphere_objective_only(benchmark::State& state, int dimension) {
-    const Problem& problem = sphere_of(dimension);
-    const std::int64_t budget = protocol_budget(dimension);
-    Rng rng(1);
-    std::vector<Eigen::VectorXd> points(1000);
-    for (auto& p : points)
-        p = uniform_point(problem.bounds(), rng);
-    std::int64_t evaluations = 0;
-    Eigen::VectorXd x(problem.dimension());
-    for (auto _ : state) {
-        Objective objective(problem, Budget{budget, std::nullopt, std::nullopt});
-        for (std::int64_t i = 0; i < budget; ++i) {
-            x = points[static_cast<std::size_t>(i % 1000)]; // same size: a copy, no allocation
-            benchmark::DoNotOptimize(objective.evaluate(x));
-        }
-        evaluations += objective.evaluations();
-    }
-    per_evaluation_rate(state, evaluations);
+    bench::objective_only_runs(state, sphere_of(dimension), protocol_budget(dimension));
 }
 
 void baseline_run(benchmark::State& state, const std::string& spec, int dimension) {
-    const auto optimizer = builtin_algorithms().create(spec);
-    const Problem& problem = sphere_of(dimension);
-    std::int64_t evaluations = 0;
-    std::uint64_t seed = 0;
-    for (auto _ : state) {
-        Objective objective(problem, Budget{protocol_budget(dimension), std::nullopt, std::nullopt},
-                            optimizer->bound_policy());
-        Rng rng(++seed);
-        run_to_budget(*optimizer, objective, rng);
-        evaluations += objective.evaluations();
-        benchmark::DoNotOptimize(objective.best_f());
-    }
-    per_evaluation_rate(state, evaluations);
+    bench::optimizer_runs(state, spec, sphere_of(dimension), protocol_budget(dimension));
 }
 
 const std::vector<std::string>& cec_baseline_specs() {

@@ -14,6 +14,7 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/sampling.hpp"
 #include "problems/problem_registry.hpp"
+#include "tests/bench/overhead_support.hpp"
 #include "tests/unit/algorithms/baselines_test_problems.hpp" // baseline_specs(): the optimisers the tests cover
 
 namespace mhb {
@@ -26,28 +27,8 @@ const Problem& cheap_problem() {
     return *problem;
 }
 
-void per_evaluation_counter(benchmark::State& state, std::int64_t evaluations) {
-    state.counters["per_eval"] = benchmark::Counter(
-        static_cast<double>(evaluations), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-}
-
 void objective_only(benchmark::State& state) {
-    const Problem& problem = cheap_problem();
-    Rng rng(1);
-    std::vector<Eigen::VectorXd> points(1000);
-    for (auto& p : points)
-        p = uniform_point(problem.bounds(), rng);
-    std::int64_t evaluations = 0;
-    Eigen::VectorXd x(problem.dimension());
-    for (auto _ : state) {
-        Objective objective(problem, Budget{budget, std::nullopt, std::nullopt});
-        for (std::int64_t i = 0; i < budget; ++i) {
-            x = points[static_cast<std::size_t>(i % 1000)]; // same size: a copy, no allocation
-            benchmark::DoNotOptimize(objective.evaluate(x));
-        }
-        evaluations += objective.evaluations();
-    }
-    per_evaluation_counter(state, evaluations);
+    bench::objective_only_runs(state, cheap_problem(), budget);
 }
 
 // Every evaluation improves best-so-far: points on a ray towards the optimum, nearest last.
@@ -68,22 +49,11 @@ void objective_improving(benchmark::State& state) {
         }
         evaluations += objective.evaluations();
     }
-    per_evaluation_counter(state, evaluations);
+    bench::per_evaluation_counter(state, evaluations);
 }
 
 void optimizer_run(benchmark::State& state, const std::string& spec) {
-    const auto optimizer = builtin_algorithms().create(spec);
-    const Problem& problem = cheap_problem();
-    std::int64_t evaluations = 0;
-    std::uint64_t seed = 0;
-    for (auto _ : state) {
-        Objective objective(problem, Budget{budget, std::nullopt, std::nullopt}, optimizer->bound_policy());
-        Rng rng(++seed);
-        run_to_budget(*optimizer, objective, rng);
-        evaluations += objective.evaluations();
-        benchmark::DoNotOptimize(objective.best_f());
-    }
-    per_evaluation_counter(state, evaluations);
+    bench::optimizer_runs(state, spec, cheap_problem(), budget);
 }
 
 const bool registered = [] {
