@@ -18,7 +18,7 @@ packages=(
     libnlopt-cxx-dev                     # NLopt baselines (C++ API)
     libboost-dev                         # Boost.Math: distributions and p-values
     libboost-program-options-dev         # the CLI and study files
-    libssl-dev                           # OpenSSL libcrypto: SHA-256 of data files and run identities
+    nettle-dev                           # GNU Nettle: SHA-256 of data files and run identities
     libarchive-dev                       # libarchive: the embedded CEC 2017/2022 data (tar, xz)
     nlohmann-json3-dev                   # nlohmann-json: the external protocol's JSON lines
     libgtest-dev libgmock-dev            # GoogleTest

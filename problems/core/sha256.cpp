@@ -2,53 +2,40 @@
 
 #include <array>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <memory>
-#include <openssl/evp.h>
+#include <nettle/sha2.h>
 #include <stdexcept>
 
 namespace mhb {
 namespace {
 
-struct DigestContextDeleter {
-    void operator()(EVP_MD_CTX* context) const { EVP_MD_CTX_free(context); }
-};
-using DigestContext = std::unique_ptr<EVP_MD_CTX, DigestContextDeleter>;
-
-DigestContext start_digest() {
-    DigestContext context(EVP_MD_CTX_new());
-    if (!context || EVP_DigestInit_ex(context.get(), EVP_sha256(), nullptr) != 1)
-        throw std::runtime_error("sha256: OpenSSL could not start a digest");
-    return context;
-}
-
-void update(EVP_MD_CTX* context, const char* data, std::size_t size) {
-    if (EVP_DigestUpdate(context, data, size) != 1)
-        throw std::runtime_error("sha256: OpenSSL could not update a digest");
-}
-
-std::string finish(EVP_MD_CTX* context) {
-    std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
-    unsigned int size = 0;
-    if (EVP_DigestFinal_ex(context, digest.data(), &size) != 1)
-        throw std::runtime_error("sha256: OpenSSL could not finish a digest");
+// A digest as 64 lowercase hex digits.
+std::string finish(sha256_ctx& context) {
+    std::array<std::uint8_t, SHA256_DIGEST_SIZE> digest{};
+    sha256_digest(&context, digest.size(), digest.data());
     static constexpr char hex[] = "0123456789abcdef";
     std::string out;
-    out.reserve(2 * size);
-    for (unsigned int i = 0; i < size; ++i) {
-        out.push_back(hex[digest[i] >> 4]);
-        out.push_back(hex[digest[i] & 0x0f]);
+    out.reserve(2 * digest.size());
+    for (const std::uint8_t byte : digest) {
+        out.push_back(hex[byte >> 4]);
+        out.push_back(hex[byte & 0x0f]);
     }
     return out;
+}
+
+void update(sha256_ctx& context, const char* data, std::size_t size) {
+    sha256_update(&context, size, reinterpret_cast<const std::uint8_t*>(data));
 }
 
 } // namespace
 
 std::string sha256_hex(std::string_view bytes) {
-    const DigestContext context = start_digest();
-    update(context.get(), bytes.data(), bytes.size());
-    return finish(context.get());
+    sha256_ctx context;
+    sha256_init(&context);
+    update(context, bytes.data(), bytes.size());
+    return finish(context);
 }
 
 std::string sha256_file_hex(const std::filesystem::path& path) {
@@ -57,15 +44,16 @@ std::string sha256_file_hex(const std::filesystem::path& path) {
     if (!in)
         throw std::runtime_error(path.string() + ": cannot read the file to hash it (" +
                                  (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
-    const DigestContext context = start_digest();
+    sha256_ctx context;
+    sha256_init(&context);
     std::array<char, 1 << 16> buffer{};
     while (in) {
         in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-        update(context.get(), buffer.data(), static_cast<std::size_t>(in.gcount()));
+        update(context, buffer.data(), static_cast<std::size_t>(in.gcount()));
     }
     if (in.bad())
         throw std::runtime_error(path.string() + ": reading the file failed while hashing it");
-    return finish(context.get());
+    return finish(context);
 }
 
 std::string short_hash(const std::string& hex, std::size_t digits) {

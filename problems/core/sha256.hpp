@@ -1,6 +1,7 @@
-// SHA-256 of bytes and of files (OpenSSL's libcrypto), as lowercase hex. Used wherever a result
+// SHA-256 of bytes and of files (GNU Nettle), as lowercase hex. Used wherever a result
 // must be tied to the exact content it came from: a dataset behind `pmsm:data=`, a run's identity
-// in the study store.
+// in the study store. Nettle rather than OpenSSL: its digest needs no start-up (OpenSSL 3 loads
+// its providers at the first digest, about 1 ms of every process) and libarchive loads it anyway.
 #pragma once
 
 #include <filesystem>
