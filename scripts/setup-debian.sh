@@ -8,7 +8,8 @@
 # pdflatex with latex-base and latex-recommended, and the journal classes IEEEtran and elsarticle
 # (texlive-publishers) with the Times fonts IEEEtran uses (texlive-fonts-recommended): report.tex
 # and the tables in two-column journals compiled by scripts/latex-check.sh, `setup-debian.sh octave`
-# Octave for the external protocol's Octave client (scripts/octave-check.sh).
+# Octave for the external protocol's Octave client (scripts/octave-check.sh), `setup-debian.sh pagmo`
+# pagmo2, the yardstick of the whole-process comparison (scripts/pagmo-compare.sh).
 set -euo pipefail
 
 packages=(
@@ -33,6 +34,7 @@ optional_browser=(chromium)              # scripts/browser-check.sh: the HTML re
 optional_tex=(texlive-latex-base texlive-latex-recommended lmodern # scripts/latex-check.sh: pdflatex,
     texlive-publishers texlive-fonts-recommended)                    # IEEEtran, elsarticle, Times
 optional_octave=(octave)                 # scripts/octave-check.sh: the external protocol's Octave client
+optional_pagmo=(libpagmo-dev)            # scripts/pagmo-compare.sh: pagmo2's PSO, timed beside mhbench's
 
 for group in "$@"; do
     case "$group" in
@@ -42,8 +44,9 @@ for group in "$@"; do
     browser) packages+=("${optional_browser[@]}") ;;
     tex) packages+=("${optional_tex[@]}") ;;
     octave) packages+=("${optional_octave[@]}") ;;
+    pagmo) packages+=("${optional_pagmo[@]}") ;;
     *)
-        echo "mhbench set-up: unknown optional group '$group' (known: fuzz, mpi, ccache, browser, tex, octave)" >&2
+        echo "mhbench set-up: unknown optional group '$group' (known: fuzz, mpi, ccache, browser, tex, octave, pagmo)" >&2
         exit 2
         ;;
     esac
