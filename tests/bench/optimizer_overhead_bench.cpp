@@ -1,6 +1,8 @@
 // Each optimiser's own time per evaluation (its overhead, excluding the objective) on a very cheap
 // problem, the 10-D sphere, with a budget of 20000 evaluations per run.
 //   optimizer/<spec>      whole runs; the counter per_eval is the run's time per evaluation.
+//   problem_only          the same loop calling the problem directly: objective_only minus this is
+//                         the Objective's own cost per evaluation
 //   objective_only        the same number of Objective::evaluate calls on stored points: the cost
 //                         of the problem plus the Objective's counting, repair and trace.
 //   objective_improving   the same, on points each better than the last: every evaluation is an
@@ -25,6 +27,10 @@ constexpr std::int64_t budget = 20000;
 const Problem& cheap_problem() {
     static const auto problem = builtin_problems().create("sphere:dim=10");
     return *problem;
+}
+
+void problem_only(benchmark::State& state) {
+    bench::problem_only_runs(state, cheap_problem(), budget);
 }
 
 void objective_only(benchmark::State& state) {
@@ -57,6 +63,7 @@ void optimizer_run(benchmark::State& state, const std::string& spec) {
 }
 
 const bool registered = [] {
+    benchmark::RegisterBenchmark("problem_only", problem_only)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("objective_only", objective_only)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("objective_improving", objective_improving)->Unit(benchmark::kMillisecond);
     for (const auto& spec : test::baseline_specs())
