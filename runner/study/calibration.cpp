@@ -2,10 +2,40 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
 
 #include "runner/run/execute_run.hpp"
 
 namespace mhb {
+
+namespace {
+
+// How much shorter a calibration run is than the run it stands for, and its floor.
+constexpr std::int64_t calibration_divisor = 50;
+constexpr std::int64_t calibration_min_evaluations = 2000;
+constexpr std::int64_t calibration_min_iterations = 3;
+
+// The problems the calibration runs on, each with the number of the study's problems it stands
+// for: per dimension, up to `per_dimension` of them spread over that dimension's problems (first
+// and last included), because time per evaluation grows with the dimension.
+std::vector<std::pair<std::size_t, double>> calibration_sample(const PreparedStudy& study,
+                                                               std::size_t per_dimension) {
+    std::map<Eigen::Index, std::vector<std::size_t>> by_dimension;
+    for (std::size_t p = 0; p < study.problems.size(); ++p)
+        by_dimension[study.problems[p]->dimension()].push_back(p);
+    std::vector<std::pair<std::size_t, double>> sample;
+    for (const auto& [dimension, group] : by_dimension) {
+        const std::size_t count = std::min(group.size(), std::max<std::size_t>(per_dimension, 1));
+        const double share = static_cast<double>(group.size()) / static_cast<double>(count);
+        for (std::size_t i = 0; i < count; ++i)
+            sample.emplace_back(group[count == 1 ? 0 : i * (group.size() - 1) / (count - 1)], share);
+    }
+    return sample;
+}
+
+} // namespace
 
 double StudyEstimate::evaluations() const {
     double total = 0;
@@ -29,6 +59,20 @@ RunRecord short_run(RunRequest request, std::int64_t max_evaluations) {
     return execute_run(request);
 }
 
+RunRecord calibration_run(RunRequest request) {
+    Budget& budget = request.budget;
+    if (budget.max_evaluations)
+        budget.max_evaluations =
+            std::min(*budget.max_evaluations,
+                     std::max(*budget.max_evaluations / calibration_divisor, calibration_min_evaluations));
+    if (budget.max_iterations)
+        budget.max_iterations =
+            std::min(*budget.max_iterations,
+                     std::max(*budget.max_iterations / calibration_divisor, calibration_min_iterations));
+    budget.target_error.reset();
+    return execute_run(request);
+}
+
 double extrapolated_evaluations(const RunRecord& short_run, const Budget& budget) {
     // Evaluations of the initialisation (iteration 0) and per iteration after it.
     const double initial =
@@ -43,47 +87,59 @@ double extrapolated_evaluations(const RunRecord& short_run, const Budget& budget
     return full;
 }
 
-StudyEstimate estimate_study(const PreparedStudy& study, std::size_t problems_per_algorithm) {
+StudyEstimate estimate_study(const PreparedStudy& study, int threads, std::size_t problems_per_dimension) {
+    const auto calibration_started = std::chrono::steady_clock::now();
     StudyEstimate estimate;
     const std::size_t algorithms = study.optimizers.size();
     const std::size_t problems = study.problems.size();
     const std::size_t budgets = study.study.budgets.size();
     const double runs = static_cast<double>(study.study.runs);
-    // Problems spread evenly over the list (first and last included), each used once.
-    std::vector<std::size_t> sample;
-    const std::size_t count = std::min(problems, std::max<std::size_t>(problems_per_algorithm, 1));
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::size_t p = count == 1 ? 0 : i * (problems - 1) / (count - 1);
-        if (sample.empty() || sample.back() != p)
-            sample.push_back(p);
-    }
+    const auto sample = calibration_sample(study, problems_per_dimension);
+
+    // Every (budget, algorithm, sampled problem), run on `threads` threads as the study will be:
+    // each run's time is then measured under the same sharing of the machine.
+    struct Calibration {
+        std::size_t budget, algorithm;
+        double share;
+        std::int64_t run_id;
+        double full_evaluations = 0, seconds = 0; // extrapolated to one full run; 0 when it failed
+    };
+    std::vector<Calibration> calibrations;
+    for (std::size_t b = 0; b < budgets; ++b)
+        for (std::size_t a = 0; a < algorithms; ++a)
+            for (const auto& [p, share] : sample)
+                calibrations.push_back(
+                    {b, a, share,
+                     static_cast<std::int64_t>(((b * problems + p) * algorithms + a)) * study.study.runs});
+    tbb::task_arena(std::max(threads, 1)).execute([&] {
+        tbb::parallel_for(std::size_t{0}, calibrations.size(), [&](std::size_t i) {
+            Calibration& c = calibrations[i];
+            const RunRequest request = study.request(c.run_id);
+            const auto started = std::chrono::steady_clock::now();
+            const RunRecord record = calibration_run(request);
+            const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
+            if (!record.ok || record.evaluations <= 0)
+                return;
+            c.full_evaluations = extrapolated_evaluations(record, request.budget); // at its dimension
+            c.seconds = c.full_evaluations * wall.count() / static_cast<double>(record.evaluations);
+        });
+    });
+
+    // Summed in a fixed order, whatever order the runs finished in.
+    estimate.calibration_runs = static_cast<std::int64_t>(calibrations.size());
     estimate.budgets.resize(budgets);
+    estimate.algorithm_seconds.assign(algorithms, 0.0);
+    for (const Calibration& c : calibrations) {
+        BudgetEstimate& out = estimate.budgets[c.budget];
+        out.evaluations += c.full_evaluations * c.share * runs;
+        out.cpu_seconds += c.seconds * c.share * runs;
+        estimate.algorithm_seconds[c.algorithm] += c.seconds * c.share * runs;
+    }
     for (std::size_t b = 0; b < budgets; ++b) {
         const StudyBudget& budget = study.study.budgets[b];
         BudgetEstimate& out = estimate.budgets[b];
         out.exact = (budget.max_evaluations || budget.evaluations_by_dimension) && !budget.max_iterations &&
                     !budget.target_error;
-        for (std::size_t a = 0; a < algorithms; ++a) {
-            double evaluations = 0; // per run, averaged over the sampled problems
-            double seconds = 0;
-            for (const std::size_t p : sample) {
-                const auto run_id =
-                    static_cast<std::int64_t>(((b * problems + p) * algorithms + a)) * study.study.runs;
-                const RunRequest request = study.request(run_id);
-                const auto started = std::chrono::steady_clock::now();
-                const RunRecord record = short_run(request, 2000);
-                const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
-                ++estimate.calibration_runs;
-                if (!record.ok || record.evaluations <= 0)
-                    continue;
-                const double full = extrapolated_evaluations(record, request.budget); // at its dimension
-                evaluations += full;
-                seconds += full * wall.count() / static_cast<double>(record.evaluations);
-            }
-            const double share = static_cast<double>(problems) / static_cast<double>(sample.size());
-            out.evaluations += evaluations * share * runs;
-            out.cpu_seconds += seconds * share * runs;
-        }
         if (out.exact) { // every run spends its budget: the count, not a sample's
             out.evaluations = 0;
             for (const auto& problem : study.problems)
@@ -92,6 +148,8 @@ StudyEstimate estimate_study(const PreparedStudy& study, std::size_t problems_pe
                     static_cast<double>(algorithms) * runs;
         }
     }
+    estimate.calibration_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - calibration_started).count();
     return estimate;
 }
 

@@ -1,6 +1,6 @@
 // A rough estimate of what a study costs before it runs (`mhbench run --dry-run`): evaluations
-// and CPU time, calibrated on a few short runs of each algorithm and budget, because evaluations
-// per iteration and time per evaluation differ between optimisers by orders of magnitude.
+// and CPU time, calibrated on short runs of each algorithm, because evaluations per iteration and
+// time per evaluation differ between optimisers by orders of magnitude, and between dimensions.
 #pragma once
 
 #include <cstdint>
@@ -19,8 +19,10 @@ struct BudgetEstimate {
 };
 
 struct StudyEstimate {
-    std::vector<BudgetEstimate> budgets; // in the study's order
+    std::vector<BudgetEstimate> budgets;   // in the study's order
+    std::vector<double> algorithm_seconds; // CPU seconds of each algorithm's runs, all budgets
     std::int64_t calibration_runs = 0;
+    double calibration_seconds = 0; // wall time the calibration took
     [[nodiscard]] double evaluations() const;
     [[nodiscard]] double cpu_seconds() const;
 };
@@ -29,13 +31,22 @@ struct StudyEstimate {
 // target. Deterministic like every run.
 RunRecord short_run(RunRequest request, std::int64_t max_evaluations);
 
+// A calibration run: `request` with its budget scaled down, to 1/50 of its evaluations (at least
+// 2000) and of its iterations (at least 3), no target. Optimisers that plan by their budget
+// (population reduction, phases, restarts) then go through their whole schedule, compressed, so
+// the time per evaluation is that of a whole run rather than of its first generations.
+RunRecord calibration_run(RunRequest request);
+
 // The evaluations one run under `budget` spends, extrapolated from a short run of the same
 // algorithm and problem: its initialisation plus its evaluations per iteration times the
 // iterations, capped by the budget's evaluations (1e300 for a budget without either).
 double extrapolated_evaluations(const RunRecord& short_run, const Budget& budget);
 
-// Runs each algorithm on up to `problems_per_algorithm` problems (spread over the study's list)
-// for at most 3 iterations and 2000 evaluations, and extrapolates to the full budgets.
-StudyEstimate estimate_study(const PreparedStudy& study, std::size_t problems_per_algorithm = 4);
+// Runs each algorithm on up to `problems_per_dimension` problems of each dimension of the study
+// (spread over the problems of that dimension, each standing for its share of them) as
+// calibration runs on `threads` threads, and extrapolates to the full budgets. The times are
+// CPU seconds on one thread (wall time of each run, which also counts an external program's).
+StudyEstimate estimate_study(const PreparedStudy& study, int threads = 1,
+                             std::size_t problems_per_dimension = 2);
 
 } // namespace mhb

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "results/analysis/cec_protocol.hpp"
 #include "results/store/store.hpp"
@@ -17,6 +19,31 @@ std::string count_text(double value) {
     char text[64];
     std::snprintf(text, sizeof text, value < 1e6 ? "%.0f" : "%.3g", value);
     return text;
+}
+
+std::string duration_text(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f s", seconds);
+    return text;
+}
+
+// "cmaes 41%, lshade 30%, ...": each algorithm's share of the estimated time, largest first, so
+// that a user sees which algorithm to leave out when the study is too long.
+std::string algorithm_shares(const PreparedStudy& prepared, const StudyEstimate& estimate) {
+    std::vector<std::size_t> order(prepared.algorithms.size());
+    for (std::size_t a = 0; a < order.size(); ++a)
+        order[a] = a;
+    const auto& seconds = estimate.algorithm_seconds;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t i, std::size_t j) { return seconds[i] > seconds[j]; });
+    const double total = std::max(estimate.cpu_seconds(), 1e-300);
+    std::string out;
+    for (const std::size_t a : order) {
+        char share[16];
+        std::snprintf(share, sizeof share, " %.0f%%", 100.0 * seconds[a] / total);
+        out += (out.empty() ? "" : ", ") + prepared.algorithms[a].label + share;
+    }
+    return out;
 }
 
 } // namespace
@@ -44,7 +71,7 @@ std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::p
     if (shown < prepared.problem_specs.size())
         out << "  ... and " << prepared.problem_specs.size() - shown << " more, to "
             << prepared.problem_specs.back() << '\n';
-    const StudyEstimate estimate = estimate_study(prepared);
+    const StudyEstimate estimate = estimate_study(prepared, threads);
     out << "\nbudgets:\n";
     for (std::size_t b = 0; b < s.budgets.size(); ++b) {
         const auto& e = estimate.budgets[b];
@@ -71,7 +98,10 @@ std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::p
     char line[160];
     std::snprintf(line, sizeof line, "%s evaluations, roughly %.3g s on %d thread%s",
                   count_text(estimate.evaluations()).c_str(), seconds, threads, threads == 1 ? "" : "s");
-    out << "\ntotal: " << line << " (calibrated on " << estimate.calibration_runs << " short runs)\n";
+    out << "\ntotal: " << line << " (calibrated on " << estimate.calibration_runs << " short runs, "
+        << duration_text(estimate.calibration_seconds) << ")\n";
+    if (prepared.algorithms.size() > 1)
+        out << "time by algorithm: " << algorithm_shares(prepared, estimate) << '\n';
     out << "output: " << dir.string();
     if (std::filesystem::exists(dir / StudyFiles::store))
         out << " (holds a study store: runs of this study found in it are not run again)\n";
