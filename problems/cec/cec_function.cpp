@@ -1,6 +1,6 @@
 // Simple, hybrid and composition functions (../shared/cec/README.md, section 4), built once from
 // the official data and evaluated without allocating: every per-call vector is a stack buffer of
-// max_dimension doubles, rotations are Eigen matrix-vector products.
+// max_dimension doubles, rotations are matrix-vector products (problems/core/matrix_vector.hpp).
 #include "problems/cec/cec_function.hpp"
 
 #include <Eigen/LU>
@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <tuple>
 #include <variant>
+
+#include "problems/core/matrix_vector.hpp"
 
 namespace mhb::cec {
 namespace {
@@ -30,7 +32,7 @@ void rotate(const Rotation& m, const double* in, double* out, int n) {
         }
         return;
     }
-    Eigen::Map<Eigen::VectorXd>(out, n).noalias() = m * Eigen::Map<const Eigen::VectorXd>(in, n);
+    multiply_square(m, in, out); // Eigen's product, bit for bit; AVX2 where the processor has it
 }
 
 // A basic function of x - o: scaled, then rotated by M unless `rotation` is empty.

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "problems/core/matrix_vector.hpp"
 #include "problems/core/parameters.hpp"
 #include "problems/functions/classic_function.hpp"
 #include "problems/functions/instance_transform.hpp"
@@ -85,7 +86,7 @@ private:
         Eigen::Map<Eigen::VectorXd> z(z_data, n);
         d = x - optimum_;
         if (rotated_)
-            z.noalias() = rotation_ * d;
+            multiply_square(rotation_, d_data, z_data); // Eigen's product, bit for bit
         else
             z = d;
         z += own_optimum_;
