@@ -250,5 +250,41 @@ TEST(StudyDesign, TheEstimateCountsEvaluationBudgetsExactly) {
     EXPECT_EQ(e.calibration_runs, 2 * 3 * 2);
 }
 
+// A calibration run is its run with the budget cut to a fiftieth, never below 2000 evaluations or
+// 3 iterations, never above the budget itself, and without the target.
+TEST(StudyDesign, ACalibrationRunIsItsRunWithTheBudgetCutToAFiftieth) {
+    Study s = paper_study({"pso"}, 1);
+    s.problems = {"sphere:dim=3"};
+    s.budgets = {parse_budget("evaluations=1000000,target=1e-300"), parse_budget("evaluations=5000"),
+                 parse_budget("evaluations=1500"), parse_budget("iterations=600"),
+                 parse_budget("iterations=100")};
+    const PreparedStudy p = prepare_study(s);
+    const auto calibrated = [&](std::size_t budget) {
+        return calibration_run(p.request(static_cast<std::int64_t>(budget)));
+    };
+    EXPECT_EQ(calibrated(0).evaluations, 20000); // the target is dropped: the sphere reaches 1e-300 never
+    EXPECT_EQ(calibrated(1).evaluations, 2000);
+    EXPECT_EQ(calibrated(2).evaluations, 1500);
+    EXPECT_EQ(calibrated(3).iterations, 12);
+    EXPECT_EQ(calibrated(4).iterations, 3);
+}
+
+// Two problems of each dimension are calibrated (first and last of that dimension), whatever the
+// order of the list, and each algorithm's share of the time is reported.
+TEST(StudyDesign, TheEstimateCalibratesTwoProblemsOfEachDimension) {
+    Study s = paper_study({"pso", "tlbo"}, 2);
+    s.problems = {"sphere:dim=2",    "rastrigin:dim=6", "sphere:dim=6",
+                  "ellipsoid:dim=2", "rastrigin:dim=2", "ackley:dim=6"};
+    s.budgets = {parse_budget("evaluations=400")};
+    const PreparedStudy p = prepare_study(s);
+    const StudyEstimate e = estimate_study(p, 2);
+    EXPECT_EQ(e.calibration_runs, 2 * 2 * 2); // algorithms x dimensions x 2
+    ASSERT_EQ(e.algorithm_seconds.size(), 2u);
+    EXPECT_GT(e.algorithm_seconds[0], 0.0);
+    EXPECT_GT(e.algorithm_seconds[1], 0.0);
+    EXPECT_DOUBLE_EQ(e.algorithm_seconds[0] + e.algorithm_seconds[1], e.cpu_seconds());
+    EXPECT_EQ(e.budgets[0].evaluations, 400.0 * 6 * 2 * 2);
+}
+
 } // namespace
 } // namespace mhb
