@@ -87,25 +87,25 @@ double extrapolated_evaluations(const RunRecord& short_run, const Budget& budget
     return full;
 }
 
-StudyEstimate estimate_study(const PreparedStudy& study, int threads, std::size_t problems_per_dimension) {
-    const auto calibration_started = std::chrono::steady_clock::now();
-    StudyEstimate estimate;
+namespace {
+
+// One calibration run of a (budget, algorithm, sampled problem), extrapolated to one full run.
+struct Calibration {
+    std::size_t budget, algorithm;
+    double share; // how many of the study's problems it stands for
+    std::int64_t run_id;
+    double full_evaluations = 0, seconds = 0; // 0 when the run failed
+};
+
+// Every (budget, algorithm, sampled problem) of the study, run on `threads` threads as the study
+// will be: each run's time is then measured under the same sharing of the machine.
+std::vector<Calibration> run_calibrations(const PreparedStudy& study,
+                                          const std::vector<std::pair<std::size_t, double>>& sample,
+                                          int threads) {
     const std::size_t algorithms = study.optimizers.size();
     const std::size_t problems = study.problems.size();
-    const std::size_t budgets = study.study.budgets.size();
-    const double runs = static_cast<double>(study.study.runs);
-    const auto sample = calibration_sample(study, problems_per_dimension);
-
-    // Every (budget, algorithm, sampled problem), run on `threads` threads as the study will be:
-    // each run's time is then measured under the same sharing of the machine.
-    struct Calibration {
-        std::size_t budget, algorithm;
-        double share;
-        std::int64_t run_id;
-        double full_evaluations = 0, seconds = 0; // extrapolated to one full run; 0 when it failed
-    };
     std::vector<Calibration> calibrations;
-    for (std::size_t b = 0; b < budgets; ++b)
+    for (std::size_t b = 0; b < study.study.budgets.size(); ++b)
         for (std::size_t a = 0; a < algorithms; ++a)
             for (const auto& [p, share] : sample)
                 calibrations.push_back(
@@ -124,10 +124,22 @@ StudyEstimate estimate_study(const PreparedStudy& study, int threads, std::size_
             c.seconds = c.full_evaluations * wall.count() / static_cast<double>(record.evaluations);
         });
     });
+    return calibrations;
+}
+
+} // namespace
+
+StudyEstimate estimate_study(const PreparedStudy& study, int threads, std::size_t problems_per_dimension) {
+    const auto calibration_started = std::chrono::steady_clock::now();
+    const std::size_t algorithms = study.optimizers.size();
+    const double runs = static_cast<double>(study.study.runs);
+    const std::vector<Calibration> calibrations =
+        run_calibrations(study, calibration_sample(study, problems_per_dimension), threads);
 
     // Summed in a fixed order, whatever order the runs finished in.
+    StudyEstimate estimate;
     estimate.calibration_runs = static_cast<std::int64_t>(calibrations.size());
-    estimate.budgets.resize(budgets);
+    estimate.budgets.resize(study.study.budgets.size());
     estimate.algorithm_seconds.assign(algorithms, 0.0);
     for (const Calibration& c : calibrations) {
         BudgetEstimate& out = estimate.budgets[c.budget];
@@ -135,7 +147,7 @@ StudyEstimate estimate_study(const PreparedStudy& study, int threads, std::size_
         out.cpu_seconds += c.seconds * c.share * runs;
         estimate.algorithm_seconds[c.algorithm] += c.seconds * c.share * runs;
     }
-    for (std::size_t b = 0; b < budgets; ++b) {
+    for (std::size_t b = 0; b < estimate.budgets.size(); ++b) {
         const StudyBudget& budget = study.study.budgets[b];
         BudgetEstimate& out = estimate.budgets[b];
         out.exact = (budget.max_evaluations || budget.evaluations_by_dimension) && !budget.max_iterations &&
