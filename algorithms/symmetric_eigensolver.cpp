@@ -82,8 +82,17 @@ void SymmetricEigensolver::compute(const Eigen::MatrixXd& matrix) {
     // the same internal routine; the public Tridiagonalization forms Q by another path).
     Eigen::internal::tridiagonalization_inplace(vectors_, values_, subdiagonal_, householder_, true);
 
-    // The implicit QR iteration of Eigen's computeFromTridiagonal_impl: deflate the negligible
-    // subdiagonal entries, take the largest unreduced block at the end, one step on it.
+    converged_ = iterate();
+    if (converged_)
+        sort_ascending();
+    values_ *= scale;
+}
+
+// The implicit QR iteration of Eigen's computeFromTridiagonal_impl: deflate the negligible
+// subdiagonal entries, take the largest unreduced block at the end, one step on it; false when
+// it gave up after 30 n steps.
+bool SymmetricEigensolver::iterate() {
+    const Eigen::Index n = values_.size();
     const double consider_as_zero = std::numeric_limits<double>::min();
     const double precision_inverse = 1.0 / std::numeric_limits<double>::epsilon();
     const Eigen::Index max_iterations = 30 * n; // Eigen's m_maxIterations (30) times n
@@ -111,18 +120,20 @@ void SymmetricEigensolver::compute(const Eigen::MatrixXd& matrix) {
             --start;
         qr_step(start, end);
     }
-    converged_ = iterations <= max_iterations;
+    return iterations <= max_iterations;
+}
 
-    if (converged_) // ascending, as Eigen sorts: the smallest of the rest swapped into place
-        for (Eigen::Index i = 0; i < n - 1; ++i) {
-            Eigen::Index k = 0;
-            values_.segment(i, n - i).minCoeff(&k);
-            if (k > 0) {
-                std::swap(values_[i], values_[k + i]);
-                vectors_.col(i).swap(vectors_.col(k + i));
-            }
+// As Eigen sorts: for each position, the smallest of the rest swapped into it with its vector.
+void SymmetricEigensolver::sort_ascending() {
+    const Eigen::Index n = values_.size();
+    for (Eigen::Index i = 0; i < n - 1; ++i) {
+        Eigen::Index k = 0;
+        values_.segment(i, n - i).minCoeff(&k);
+        if (k > 0) {
+            std::swap(values_[i], values_[k + i]);
+            vectors_.col(i).swap(vectors_.col(k + i));
         }
-    values_ *= scale;
+    }
 }
 
 // Eigen's tridiagonal_qr_step: a Wilkinson shift, then the bulge chased down [start, end], each

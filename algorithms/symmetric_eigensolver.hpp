@@ -24,7 +24,9 @@ public:
     [[nodiscard]] bool converged() const { return converged_; }
 
 private:
+    bool iterate();
     void qr_step(Eigen::Index start, Eigen::Index end);
+    void sort_ascending();
 
     Eigen::MatrixXd vectors_;
     Eigen::VectorXd values_;
