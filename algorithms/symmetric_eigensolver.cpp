@@ -52,8 +52,7 @@ void rotate_columns_avx2(double* x, double* y, Eigen::Index n, double c, double 
 namespace {
 
 void rotate_columns(double* x, double* y, Eigen::Index n, double c, double s) {
-    static const bool avx2 = detail::processor_has_avx2();
-    if (avx2)
+    if (detail::processor_has_avx2())
         detail::rotate_columns_avx2(x, y, n, c, s);
     else
         detail::rotate_columns_portable(x, y, n, c, s);

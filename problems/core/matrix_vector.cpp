@@ -60,7 +60,8 @@ __attribute__((target("avx2"))) void multiply_square_avx2(const Eigen::MatrixXd&
 }
 
 bool processor_has_avx2() {
-    return __builtin_cpu_supports("avx2");
+    static const bool avx2 = __builtin_cpu_supports("avx2"); // asked once per process
+    return avx2;
 }
 
 #else
@@ -78,8 +79,7 @@ bool processor_has_avx2() {
 } // namespace detail
 
 void multiply_square(const Eigen::MatrixXd& m, const double* in, double* out) {
-    static const bool avx2 = detail::processor_has_avx2();
-    if (avx2 && m.rows() < detail::eigen_one_block_limit)
+    if (detail::processor_has_avx2() && m.rows() < detail::eigen_one_block_limit)
         detail::multiply_square_avx2(m, in, out);
     else
         detail::multiply_square_eigen(m, in, out);

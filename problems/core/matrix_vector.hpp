@@ -18,7 +18,8 @@ namespace mhb {
 void multiply_square(const Eigen::MatrixXd& m, const double* in, double* out);
 
 namespace detail {
-// The two kernels, for the test that compares them; multiply_square picks one once per process.
+// The two kernels, for the test that compares them, and whether this processor runs the AVX2 one
+// (asked once per process).
 void multiply_square_eigen(const Eigen::MatrixXd& m, const double* in, double* out);
 void multiply_square_avx2(const Eigen::MatrixXd& m, const double* in, double* out);
 bool processor_has_avx2();
