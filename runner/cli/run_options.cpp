@@ -36,8 +36,8 @@ po::options_description make_run_options() {
          "start from a study file (scripts/studies/*.ini are examples, DIR/study.ini of an earlier study "
          "another); other options override its values")
         ("dry-run", po::bool_switch(),
-         "print the expanded study (algorithms with their labels, problems, budgets, runs, evaluations and a "
-         "time estimate from a short calibration) and run nothing")
+         "print the expanded study (algorithms with their labels, problems, budgets, runs, evaluations, a "
+         "time estimate from short calibration runs and each algorithm's share of it) and run nothing")
         ("shard", po::value<std::string>(),
          "i/n: run only shard i of n of the study (a deterministic share, balanced by estimated cost) into "
          "--out; `mhbench merge OUT DIR...` joins the n shard directories into the study one process writes "
