@@ -154,6 +154,31 @@ FactorialFindings factorial_findings(const StudyIndex& index, double alpha) {
     return found;
 }
 
+// Why runs failed: each distinct message once, with how many runs it ended and the first of them
+// (a study of 10^4 runs that one fault failed 300 times says so in one line), and what to do.
+void say_failures(const StudyIndex& index, std::ostream& console) {
+    std::vector<std::pair<std::string, std::vector<const RunRecord*>>> reasons; // in order of first run
+    for (const RunRecord* r : index.failed()) {
+        const std::string why = r->message.empty() ? std::string("no message") : r->message;
+        auto same =
+            std::find_if(reasons.begin(), reasons.end(), [&](const auto& e) { return e.first == why; });
+        if (same == reasons.end())
+            reasons.push_back({why, {r}});
+        else
+            same->second.push_back(r);
+    }
+    console << count_of(index.failed().size(), "failed run")
+            << " left out (running the study's command again "
+            << "computes them again, keeping every other run):\n";
+    constexpr std::size_t shown = 3;
+    for (std::size_t i = 0; i < reasons.size() && i < shown; ++i)
+        console << "  " << count_of(reasons[i].second.size(), "run")
+                << " (first: " << run_name(index, *reasons[i].second.front()) << "): " << reasons[i].first
+                << '\n';
+    if (reasons.size() > shown)
+        console << "  and " << reasons.size() - shown << " other reasons: runs.csv, column 'message'\n";
+}
+
 // The console's summary of a budget: its runs, what was left out, and its factorial designs.
 void say_budget_summary(const StudyData& study, const std::string& budget, const StudyIndex& index,
                         const std::string& heading, const std::string& reference,
@@ -165,12 +190,8 @@ void say_budget_summary(const StudyData& study, const std::string& budget, const
             << count_of(index.problems().size(), "problem") << ", "
             << count_of(index.algorithms().size(), "algorithm") << "; reference " << index.label(reference)
             << '\n';
-    if (!index.failed().empty()) {
-        const RunRecord& first = *index.failed().front();
-        console << count_of(index.failed().size(), "failed run")
-                << " left out (first: " << run_name(index, first) << ": "
-                << (first.message.empty() ? std::string("no message") : first.message) << ")\n";
-    }
+    if (!index.failed().empty())
+        say_failures(index, console);
     if (index.infinite_runs() > 0)
         console << count_of(index.infinite_runs(), "run") << " ended at "
                 << (index.negative_infinite_runs() == 0 ? "+inf" : "+inf or -inf")

@@ -110,6 +110,12 @@ std::string ByteReader::text() {
     return value;
 }
 
+void ByteReader::skip_text() {
+    const std::uint64_t n = u64();
+    need(n);
+    position_ += n;
+}
+
 void encode_record(ByteWriter& out, const RunRecord& r, double wall_seconds) {
     out.i64(r.run_id);
     out.text(r.algorithm);
@@ -211,6 +217,17 @@ DecodedRecord decode_record(ByteReader& in, bool from_store) {
         // Any other section is one a newer mhbench added: skipped, as this one was by older ones.
     }
     return d;
+}
+
+bool record_succeeded(ByteReader& in) {
+    // The fields before `ok`, in encode_record's order: run_id, algorithm, problem, budget,
+    // run_index, seed.
+    (void)in.i64();
+    for (int text = 0; text < 3; ++text)
+        in.skip_text();
+    (void)in.i64();
+    (void)in.u64();
+    return in.u64() != 0;
 }
 
 DecodedRecord decode_record(std::string_view bytes) {

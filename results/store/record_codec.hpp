@@ -42,6 +42,7 @@ public:
     std::int64_t i64() { return static_cast<std::int64_t>(u64()); }
     double f64();
     std::string text();
+    void skip_text(); // a text() not kept
     [[nodiscard]] bool at_end() const { return position_ == bytes_.size(); }
 
 private:
@@ -63,5 +64,8 @@ struct DecodedRecord {
 // in a message between MPI ranks, that would be a truncation.
 DecodedRecord decode_record(ByteReader& in, bool from_store = false);
 DecodedRecord decode_record(std::string_view bytes);
+// Whether the record that starts at `in` is a successful run, read from its first fields alone
+// (the store's index asks this of every block, and a record may hold 10^5 curve points).
+bool record_succeeded(ByteReader& in);
 
 } // namespace mhb

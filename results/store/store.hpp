@@ -164,7 +164,11 @@ public:
     StudyWriter(const StudyWriter&) = delete;
     StudyWriter& operator=(const StudyWriter&) = delete;
 
+    // The study's runs whose record is in the store, and succeeded: a run whose stored record is
+    // a failure (an external program that crashed, an optimiser that threw) is not completed, so
+    // that the same command computes it again; retried_failures() counts those.
     [[nodiscard]] const std::set<std::int64_t>& completed() const { return completed_; }
+    [[nodiscard]] std::int64_t retried_failures() const { return retried_failures_; }
     [[nodiscard]] const std::filesystem::path& directory() const { return dir_; }
     // What opening the store found to say (damaged records), one line each, for the user.
     [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
@@ -189,6 +193,7 @@ private:
         std::uint64_t offset = 0; // of the block's payload in store.bin
         std::uint64_t size = 0;
         std::string slot;
+        bool failed = false; // the record is a failed run's
     };
     // A stored block whose record cannot be trusted (checksum, or decoding).
     struct Damaged {
@@ -222,6 +227,7 @@ private:
     std::unordered_map<std::string, Stored> index_; // identity -> where its newest block is
     std::vector<std::string> identities_;           // of the study's runs, by run_id (with keys)
     std::set<std::int64_t> completed_;
+    std::int64_t retried_failures_ = 0;
     std::vector<Damaged> damaged_;
     std::vector<std::string> warnings_;
     StudySummary summary_;

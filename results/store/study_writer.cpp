@@ -146,6 +146,7 @@ void StudyWriter::append(const RunRecord& record, double wall_seconds) {
     stored.offset = offset + block_magic.size() + 8;
     stored.size = block.size() - block_magic.size() - 8 - block_end.size();
     stored.slot = key.slot;
+    stored.failed = !record.ok;
     {
         const std::lock_guard<std::mutex> lock(mutex_);
         index_[key.identity] = std::move(stored);

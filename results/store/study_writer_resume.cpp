@@ -105,11 +105,12 @@ void StudyWriter::index_block(std::uint64_t offset, std::string_view payload) {
         stored.offset = offset;
         stored.size = payload.size();
         stored.slot = reader.text();
-        if (check == PayloadCheck::unchecked) {           // no checksum: it must at least decode
-            for (int skipped = 0; skipped < 2; ++skipped) // facts, notes
-                reader.text();
-            (void)decode_record(reader, true);
-        }
+        reader.skip_text();                   // facts
+        reader.skip_text();                   // notes
+        if (check == PayloadCheck::unchecked) // no checksum: it must at least decode
+            stored.failed = !decode_record(reader, true).record.ok;
+        else
+            stored.failed = !record_succeeded(reader);
         if (check != PayloadCheck::damaged) {
             index_[identity] = std::move(stored);
             return;
@@ -141,8 +142,13 @@ void StudyWriter::check_changes(bool overwrite) {
     });
     for (std::int64_t id = 0; id < count; ++id) {
         const auto i = static_cast<std::size_t>(id);
-        if (index_.count(identities_[i]) != 0) {
-            completed_.insert(completed_.end(), id);
+        if (const auto stored = index_.find(identities_[i]); stored != index_.end()) {
+            // A failed record is no result: the run is computed again, and its new record replaces
+            // it (the newest block of an identity is the one used).
+            if (stored->second.failed)
+                ++retried_failures_;
+            else
+                completed_.insert(completed_.end(), id);
             continue;
         }
         if (slot_taken[i] == 0)

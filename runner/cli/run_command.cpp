@@ -97,7 +97,8 @@ std::pair<std::int64_t, std::int64_t> report_outcome(const StudySummary& summary
     if (failed > 0) {
         std::cerr << "mhbench run: " << failed << " of " << total << " runs failed"
                   << (failed == total ? " (all of them)" : "") << "; each carries its message in "
-                  << (dir / StudyFiles::runs).string() << " (column 'message'). The first:\n";
+                  << (dir / StudyFiles::runs).string()
+                  << " (column 'message'), and the same command computes them again. The first:\n";
         for (const auto& r : summary.first_failures) {
             std::string message = r.message; // one line each, as runs.csv shows it
             std::replace(message.begin(), message.end(), '\n', ' ');
@@ -331,6 +332,10 @@ int run_into_directory(const PreparedStudy& prepared, const RunSettings& setting
                        prepared.algorithms, std::move(keys));
     for (const std::string& warning : writer.warnings())
         std::cerr << "mhbench run: warning: " << warning << '\n';
+    if (const std::int64_t retried = writer.retried_failures(); retried > 0)
+        std::cerr << "mhbench run: " << retried << (retried == 1 ? " run" : " runs")
+                  << " of the store failed before; computing " << (retried == 1 ? "it" : "them")
+                  << " again\n";
     if (shard)
         write_file_atomically(dir / StudyFiles::shard, shard_line);
     else

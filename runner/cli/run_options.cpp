@@ -43,7 +43,9 @@ po::options_description make_run_options() {
          "--out; `mhbench merge OUT DIR...` joins the n shard directories into the study one process writes "
          "(see scripts/slurm-array.sh)")
         ("threads", po::value<std::string>(), "worker threads (default: all hardware threads); results do not depend on it")
-        ("out", po::value<std::string>(), "study directory (default: studies/<preset name, or 'study'>)")
+        ("out", po::value<std::string>(),
+         "study directory (default: studies/<preset name, or 'study'>); the same command into it again "
+         "resumes, and computes again the runs that failed")
         ("overwrite", po::bool_switch(),
          "empty the study store in --out and do every run again (needed when a data file, labelled "
          "algorithm or seed changed under stored runs)")
@@ -117,8 +119,10 @@ bool load_base_study(const po::variables_map& vm, Study& study, std::string& nam
             errors.emplace_back(e.what());
             return false;
         }
-        // Every error of the file is kept, with its line, and reported with the command line's.
-        parse_study_file(text, path.string(), study, errors);
+        // Every error of the file is kept, with its line, and reported with the command line's;
+        // after a line that is not `key = value`, "no algorithm given" and the like are noise.
+        if (!parse_study_file(text, path.string(), study, errors))
+            return false;
     }
     return true;
 }

@@ -1,6 +1,7 @@
 #include "runner/run/execute_run.hpp"
 
 #include <exception>
+#include <optional>
 
 #include "problems/core/rng.hpp"
 
@@ -9,6 +10,24 @@ namespace {
 
 std::vector<double> to_vector(const Eigen::VectorXd& x) {
     return {x.data(), x.data() + x.size()};
+}
+
+// The finished run's results, as the Objective recorded them.
+void fill_from_objective(const Objective& objective, RunRecord& record) {
+    record.best_f = objective.best_f();
+    record.best_x = to_vector(objective.best_x());
+    record.evaluations = objective.evaluations();
+    record.iterations = objective.iterations();
+    record.evaluations_to_target = objective.evaluations_to_target();
+    for (const auto& p : objective.iteration_trace())
+        record.curve.push_back({p.iteration, p.evaluations, p.best_f, to_vector(p.best_x)});
+    for (const auto& c : objective.checkpoint_trace())
+        record.checkpoints.push_back({c.evaluations, c.best_f});
+    ImprovementTrace& improvements = record.improvements.emplace();
+    improvements.points.reserve(objective.recorder().improvements().size());
+    for (const auto& i : objective.recorder().improvements())
+        improvements.points.push_back({i.evaluations, i.best_f});
+    improvements.last_f = objective.recorder().last_f();
 }
 
 } // namespace
@@ -22,6 +41,8 @@ RunRecord execute_run(const RunRequest& request) {
     record.budget = request.budget_text;
     record.seed = request.seed;
     const Problem& problem = *request.problem;
+    // Outside the try, so that a failed run still records the evaluations it spent.
+    std::optional<Objective> objective;
     // Everything that asks the problem or the optimiser anything is inside the try: a component
     // that throws fails its own run, never the study.
     try {
@@ -35,24 +56,11 @@ RunRecord execute_run(const RunRequest& request) {
         }
         ObjectiveOptions options;
         options.record_best_x = !record.parameter_names.empty();
-        Objective objective(problem, request.budget, request.optimizer->bound_policy(), options);
+        objective.emplace(problem, request.budget, request.optimizer->bound_policy(), options);
         Rng rng(record.seed);
-        run_to_budget(*request.optimizer, objective, rng);
-        record.best_f = objective.best_f();
-        record.best_x = to_vector(objective.best_x());
-        record.evaluations = objective.evaluations();
-        record.iterations = objective.iterations();
-        record.evaluations_to_target = objective.evaluations_to_target();
-        for (const auto& p : objective.iteration_trace())
-            record.curve.push_back({p.iteration, p.evaluations, p.best_f, to_vector(p.best_x)});
-        for (const auto& c : objective.checkpoint_trace())
-            record.checkpoints.push_back({c.evaluations, c.best_f});
-        ImprovementTrace& improvements = record.improvements.emplace();
-        improvements.points.reserve(objective.recorder().improvements().size());
-        for (const auto& i : objective.recorder().improvements())
-            improvements.points.push_back({i.evaluations, i.best_f});
-        improvements.last_f = objective.recorder().last_f();
-        if (objective.evaluations() == 0) {
+        run_to_budget(*request.optimizer, *objective, rng);
+        fill_from_objective(*objective, record);
+        if (objective->evaluations() == 0) {
             record.ok = false;
             record.message = "the optimiser made no evaluation";
         }
@@ -64,6 +72,12 @@ RunRecord execute_run(const RunRequest& request) {
         record.message = "the run threw something that is not a std::exception";
     }
     if (!record.ok) {
+        // What the failed run spent counts against it (a retry spends it again); its curves and
+        // best point are no result.
+        if (objective) {
+            record.evaluations = objective->evaluations();
+            record.iterations = objective->iterations();
+        }
         record.curve.clear();
         record.checkpoints.clear();
         record.improvements.reset();
