@@ -17,6 +17,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/population.hpp"
+#include "algorithms/population_limits.hpp"
 
 namespace mhb {
 namespace {
@@ -27,6 +28,13 @@ public:
         : population_(population), f_(f), cr_(cr) {}
 
     std::string name() const override { return "de"; }
+
+    // The population and its trials; np = 0 means 10 D.
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        const double np =
+            population_ > 0 ? static_cast<double>(population_) : 10.0 * static_cast<double>(dimension);
+        return population_memory_refusal("de", 2.0 * np, dimension, "np");
+    }
 
     void run(Objective& objective, Rng& rng) const override {
         const Eigen::Index d = objective.dimension();

@@ -22,6 +22,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/population.hpp"
+#include "algorithms/population_limits.hpp"
 
 namespace mhb {
 namespace {
@@ -31,6 +32,11 @@ public:
     Etlbo(long long population, long long elite) : population_(population), elite_(elite) {}
 
     std::string name() const override { return "etlbo"; }
+
+    // The class, its elite and the candidates being evaluated.
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        return population_memory_refusal("etlbo", 3.0 * static_cast<double>(population_), dimension, "np");
+    }
 
     void run(Objective& objective, Rng& rng) const override {
         const Eigen::Index d = objective.dimension();

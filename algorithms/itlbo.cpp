@@ -71,6 +71,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/classroom.hpp"
+#include "algorithms/population_limits.hpp"
 
 namespace mhb {
 namespace {
@@ -91,6 +92,11 @@ public:
     explicit Itlbo(ItlboSettings settings) : s_(settings) {}
 
     std::string name() const override { return "itlbo"; }
+
+    // The class, its new candidates (opposite points included) and the batch being evaluated.
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        return population_memory_refusal("itlbo", 4.0 * static_cast<double>(s_.np), dimension, "np");
+    }
 
     void run(Objective& objective, Rng& rng) const override {
         // Taken before anything is drawn from `rng`, which it leaves as it is.

@@ -15,6 +15,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/population.hpp"
+#include "algorithms/population_limits.hpp"
 
 namespace mhb {
 namespace {
@@ -24,6 +25,11 @@ public:
     explicit Jaya(long long population) : population_(population) {}
 
     std::string name() const override { return "jaya"; }
+
+    // The population and its candidates.
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        return population_memory_refusal("jaya", 2.0 * static_cast<double>(population_), dimension, "np");
+    }
 
     void run(Objective& objective, Rng& rng) const override {
         const Eigen::Index d = objective.dimension();

@@ -81,6 +81,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/population.hpp"
+#include "algorithms/population_limits.hpp"
 #include "algorithms/shade_steps.hpp"
 
 namespace mhb {
@@ -102,20 +103,30 @@ struct JsoTrialParameters {
     double f;
 };
 
+// round(r_ninit * sqrt(D) * ln D), and why jSO cannot run at D: a population the dimension makes
+// smaller than n_min (D = 1 makes it 0), or one that does not fit in memory with its trials and
+// archive.
+std::size_t jso_initial_population(const JsoSettings& s, Eigen::Index dimension) {
+    const auto dd = static_cast<double>(dimension);
+    return static_cast<std::size_t>(std::llround(s.r_ninit * std::sqrt(dd) * std::log(dd)));
+}
+
+std::optional<std::string> jso_refusal(const JsoSettings& s, Eigen::Index dimension) {
+    return shade_population_refusal("jso", "round(r_ninit * sqrt(D) * ln(D))",
+                                    jso_initial_population(s, dimension), s.n_min, s.r_arc, dimension,
+                                    "D = 1 needs another method");
+}
+
 // One jSO run: its population, memories and archive, and the steps of a generation.
 class JsoRun {
 public:
     JsoRun(const JsoSettings& settings, Objective& objective, Rng& rng)
         : s_(settings), objective_(objective), rng_(rng), h_(static_cast<std::size_t>(settings.memory)),
           m_cr_(h_, settings.m_cr), m_f_(h_, settings.m_f) {
-        const auto dd = static_cast<double>(objective.dimension());
-        n_init_ = static_cast<std::size_t>(std::llround(s_.r_ninit * std::sqrt(dd) * std::log(dd)));
+        if (auto why = jso_refusal(s_, objective.dimension()))
+            throw std::invalid_argument(std::move(*why));
+        n_init_ = jso_initial_population(s_, objective.dimension());
         n_min_ = static_cast<std::size_t>(s_.n_min);
-        if (n_init_ < n_min_)
-            throw std::invalid_argument(
-                "jso: initial population round(r_ninit * sqrt(D) * ln(D)) = " + std::to_string(n_init_) +
-                " is smaller than n_min = " + std::to_string(n_min_) +
-                "; raise 'r_ninit' (D = 1 needs another method)");
         max_nfe_ = shade::lpsr_max_evaluations(objective.budget(), static_cast<double>(n_init_),
                                                static_cast<double>(n_min_));
         archive_max_ = static_cast<std::size_t>(s_.r_arc * static_cast<double>(n_init_));
@@ -270,6 +281,10 @@ public:
     std::string name() const override { return "jso"; }
 
     void run(Objective& objective, Rng& rng) const override { JsoRun(s_, objective, rng).run(); }
+
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        return jso_refusal(s_, dimension);
+    }
 
 private:
     JsoSettings s_;

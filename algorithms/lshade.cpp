@@ -23,6 +23,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/population.hpp"
+#include "algorithms/population_limits.hpp"
 #include "algorithms/shade_steps.hpp"
 
 namespace mhb {
@@ -36,20 +37,27 @@ struct LshadeSettings {
     long long memory = 6;
 };
 
+// round(r_ninit * D), and why L-SHADE cannot run at D: a population the dimension makes smaller
+// than n_min, or one whose population, trials and archive do not fit in memory.
+std::size_t lshade_initial_population(const LshadeSettings& s, Eigen::Index dimension) {
+    return static_cast<std::size_t>(std::llround(s.r_ninit * static_cast<double>(dimension)));
+}
+
+std::optional<std::string> lshade_refusal(const LshadeSettings& s, Eigen::Index dimension) {
+    return shade_population_refusal("lshade", "round(r_ninit * D)", lshade_initial_population(s, dimension),
+                                    s.n_min, s.r_arc, dimension, "the population is too small");
+}
+
 // One L-SHADE run: its population, memories and archive, and the steps of a generation.
 class LshadeRun {
 public:
     LshadeRun(const LshadeSettings& settings, Objective& objective, Rng& rng)
         : s_(settings), objective_(objective), rng_(rng), h_(static_cast<std::size_t>(settings.memory)),
           m_cr_(h_, 0.5), m_f_(h_, 0.5), cr_terminal_(h_, false) {
-        n_init_ =
-            static_cast<std::size_t>(std::llround(s_.r_ninit * static_cast<double>(objective.dimension())));
+        if (auto why = lshade_refusal(s_, objective.dimension()))
+            throw std::invalid_argument(std::move(*why));
+        n_init_ = lshade_initial_population(s_, objective.dimension());
         n_min_ = static_cast<std::size_t>(s_.n_min);
-        if (n_init_ < n_min_)
-            throw std::invalid_argument(
-                "lshade: initial population round(r_ninit * D) = " + std::to_string(n_init_) +
-                " is smaller than n_min = " + std::to_string(n_min_) +
-                "; raise 'r_ninit' (the population is too small)");
         max_nfe_ = shade::lpsr_max_evaluations(objective.budget(), static_cast<double>(n_init_),
                                                static_cast<double>(n_min_));
         archive_max_ = static_cast<std::size_t>(std::llround(s_.r_arc * static_cast<double>(n_init_)));
@@ -192,6 +200,10 @@ public:
     std::string name() const override { return "lshade"; }
 
     void run(Objective& objective, Rng& rng) const override { LshadeRun(s_, objective, rng).run(); }
+
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        return lshade_refusal(s_, dimension);
+    }
 
 private:
     LshadeSettings s_;

@@ -109,6 +109,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/population.hpp"
+#include "algorithms/population_limits.hpp"
 #include "algorithms/shade_steps.hpp"
 
 namespace mhb {
@@ -276,21 +277,29 @@ public:
 
     std::string name() const override { return "lshade-cnepsin"; }
 
+    // round(r_ninit * D), refused when the dimension makes it smaller than n_min or when it does
+    // not fit in memory with its trials and archive.
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        return shade_population_refusal("lshade-cnepsin", "round(r_ninit * D)", initial_population(dimension),
+                                        s_.n_min, s_.r_arc, dimension);
+    }
+
     BoundPolicy bound_policy() const override { return s_.bounds; }
 
     void run(Objective& objective, Rng& rng) const override {
-        const auto n_init =
-            static_cast<std::size_t>(std::llround(s_.r_ninit * static_cast<double>(objective.dimension())));
+        if (auto why = refusal(objective.dimension()))
+            throw std::invalid_argument(std::move(*why));
+        const auto n_init = initial_population(objective.dimension());
         const auto n_min = static_cast<std::size_t>(s_.n_min);
-        if (n_init < n_min)
-            throw std::invalid_argument(
-                "lshade-cnepsin: initial population round(r_ninit * D) = " + std::to_string(n_init) +
-                " is smaller than n_min = " + std::to_string(n_min) + "; raise 'r_ninit'");
         Run r{s_, objective, rng, n_init, n_min};
         r.go();
     }
 
 private:
+    [[nodiscard]] std::size_t initial_population(Eigen::Index dimension) const {
+        return static_cast<std::size_t>(std::llround(s_.r_ninit * static_cast<double>(dimension)));
+    }
+
     // The state of one run and its steps.
     struct Run {
         const CnEpSinSettings& s;

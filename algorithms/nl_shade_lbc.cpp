@@ -100,6 +100,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/population.hpp"
+#include "algorithms/population_limits.hpp"
 #include "algorithms/shade_steps.hpp"
 
 namespace mhb {
@@ -197,14 +198,19 @@ public:
 
     std::string name() const override { return "nl-shade-lbc"; }
 
+    // round(r_ninit * D), refused when the dimension makes it smaller than n_min or when it does
+    // not fit in memory with its trials and archive.
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        return shade_population_refusal("nl-shade-lbc", "round(r_ninit * D)", initial_population(dimension),
+                                        s_.n_min, s_.r_arc, dimension);
+    }
+
     void run(Objective& objective, Rng& rng) const override {
+        if (auto why = refusal(objective.dimension()))
+            throw std::invalid_argument(std::move(*why));
         const auto dd = static_cast<double>(objective.dimension());
-        const auto n_init = static_cast<std::size_t>(std::llround(s_.r_ninit * dd));
+        const auto n_init = initial_population(objective.dimension());
         const auto n_min = static_cast<std::size_t>(s_.n_min);
-        if (n_init < n_min)
-            throw std::invalid_argument(
-                "nl-shade-lbc: initial population round(r_ninit * D) = " + std::to_string(n_init) +
-                " is smaller than n_min = " + std::to_string(n_min) + "; raise 'r_ninit'");
         const auto h = static_cast<std::size_t>(std::max(1LL, std::llround(s_.r_h * dd)));
         const double max_nfe = nl_shade_lbc_max_evaluations(objective.budget(), static_cast<double>(n_init),
                                                             static_cast<double>(n_min));
@@ -240,6 +246,10 @@ public:
     }
 
 private:
+    [[nodiscard]] std::size_t initial_population(Eigen::Index dimension) const {
+        return static_cast<std::size_t>(std::llround(s_.r_ninit * static_cast<double>(dimension)));
+    }
+
     NlShadeLbcGeneration draw_generation(const NlShadeLbcState& st, double r, Rng& rng) const {
         const std::size_t n = st.pop.size();
         const std::size_t h = st.m_f.size();

@@ -4,6 +4,7 @@
 // the thing avoided here).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "problems/core/rng.hpp"
@@ -24,6 +25,16 @@ public:
     // (e.g. a deterministic method that has converged); may also be unwound by BudgetExhausted
     // from objective.evaluate(). Must draw every random number from `rng`.
     virtual void run(Objective& objective, Rng& rng) const = 0;
+
+    // Why this configuration cannot run on a problem of `dimension`, as one line that starts with
+    // the optimiser's name and says which parameter to change (a population the dimension makes
+    // smaller than the method needs, or too large for memory); nothing when it can. A study asks
+    // every optimiser about every problem's dimension before its first run, so that it is refused
+    // at once, with no directory made; run() may still throw for a caller that did not ask.
+    [[nodiscard]] virtual std::optional<std::string> refusal(Eigen::Index dimension) const {
+        (void)dimension;
+        return std::nullopt;
+    }
 
     // What determines this optimiser's numbers beyond its spec and implementation version, as one
     // line that joins the identity of its runs: for an external program, the SHA-256 of its code

@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "algorithms/algorithm_registry.hpp"
+#include "algorithms/population_limits.hpp"
 #include "algorithms/sampling.hpp"
 
 namespace mhb {
@@ -62,6 +63,11 @@ public:
     explicit Pso(PsoSettings settings) : s_(settings) {}
 
     std::string name() const override { return "pso"; }
+
+    // The positions, velocities, personal bests and the batch of new points.
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        return population_memory_refusal("pso", 4.0 * static_cast<double>(s_.np), dimension, "np");
+    }
 
     void run(Objective& objective, Rng& rng) const override {
         const Eigen::Index d = objective.dimension();

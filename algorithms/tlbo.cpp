@@ -46,6 +46,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/classroom.hpp"
+#include "algorithms/population_limits.hpp"
 
 namespace mhb {
 namespace {
@@ -55,6 +56,11 @@ public:
     Tlbo(Eigen::Index np, detail::LearningFactor r_mode) : np_(np), r_mode_(r_mode) {}
 
     std::string name() const override { return "tlbo"; }
+
+    // The class, its new candidates and the batch being evaluated.
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        return population_memory_refusal("tlbo", 3.0 * static_cast<double>(np_), dimension, "np");
+    }
 
     void run(Objective& objective, Rng& rng) const override {
         detail::Classroom c(objective, rng, np_);

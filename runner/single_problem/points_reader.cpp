@@ -54,6 +54,10 @@ std::vector<PointLine> read_points(std::istream& in, const std::string& source, 
     }
     if (in.bad()) // e.g. a directory: it opens, but reading it fails
         throw std::runtime_error(source + ": cannot be read (" + std::strerror(errno) + ")");
+    // Printing nothing and exiting 0 would let a pipeline that produced no point pass unnoticed.
+    if (points.empty())
+        throw std::runtime_error(source + ": holds no point (one a line, " + std::to_string(dimension) +
+                                 " coordinates separated by spaces or commas)");
     return points;
 }
 

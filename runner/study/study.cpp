@@ -279,6 +279,21 @@ void check_dimension_budgets(const PreparedStudy& prepared, std::vector<std::str
 }
 
 // A protocol names its suite and records errors at fractions of the evaluation budget.
+// Every optimiser against every dimension of the study's problems (Optimizer::refusal): a
+// population too small for the method or too large for memory is refused now, in one line per
+// optimiser and dimension, rather than as a failure of each of its runs.
+void check_optimizer_dimensions(const PreparedStudy& prepared, std::vector<std::string>& errors) {
+    std::set<Eigen::Index> dimensions;
+    for (const auto& problem : prepared.problems)
+        if (problem)
+            dimensions.insert(problem->dimension());
+    for (const auto& optimizer : prepared.optimizers)
+        for (const Eigen::Index dimension : dimensions)
+            if (auto refusal = optimizer->refusal(dimension);
+                refusal && std::find(errors.begin(), errors.end(), *refusal) == errors.end())
+                errors.push_back(std::move(*refusal));
+}
+
 void check_protocol(const PreparedStudy& prepared, std::vector<std::string>& errors) {
     const std::string& name = prepared.study.protocol;
     if (name.empty())
@@ -381,6 +396,7 @@ PreparedStudy prepare_study(const Study& study, const AlgorithmRegistry& algorit
         prepared.budget_texts.push_back(text);
     }
     check_dimension_budgets(prepared, errors);
+    check_optimizer_dimensions(prepared, errors);
     check_protocol(prepared, errors);
     // A target needs f*; said once per problem, however many budgets set one.
     if (std::any_of(study.budgets.begin(), study.budgets.end(),

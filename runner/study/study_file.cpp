@@ -80,24 +80,30 @@ std::string study_ini(const Study& study) {
     return text;
 }
 
-void parse_study_file(std::string_view text, const std::string& origin, Study& study,
+bool parse_study_file(std::string_view text, const std::string& origin, Study& study,
                       std::vector<std::string>& errors) {
     namespace po = boost::program_options;
     if (text.substr(0, 3) == "\xEF\xBB\xBF") // a UTF-8 byte-order mark, as some editors write
         text.remove_prefix(3);
     const po::options_description options = study_options();
     StudyOptionReader reader(study);
+    const std::size_t errors_before = errors.size();
+    std::size_t malformed = 0;
+    std::size_t well_formed = 0;
     for (const auto& line : logical_lines(text)) {
         const std::string where = origin + ":" + std::to_string(line.number);
         if (line.text.front() == '[') {
             errors.push_back(where + ": sections (" + quoted_excerpt(line.text) +
                              ") are not used in study files");
+            ++malformed;
             continue;
         }
         if (line.text.find('=') == std::string::npos) {
             errors.push_back(where + ": " + quoted_excerpt(line.text) + " is not key = value");
+            ++malformed;
             continue;
         }
+        ++well_formed;
         // Boost.Program_options reads the line (key, value, the option's name); one line at a
         // time, so that every error can name its line.
         std::istringstream stream(line.text + '\n');
@@ -120,7 +126,18 @@ void parse_study_file(std::string_view text, const std::string& origin, Study& s
             errors.push_back(where + ": " + e.what());
         }
     }
+    if (malformed > 1 && well_formed == 0) {
+        // Not a study file at all (another file given by mistake, or garbage): one line, not one a
+        // line of it.
+        const std::string first = errors[errors_before];
+        errors.resize(errors_before);
+        errors.push_back(origin + ": is not a study file (no line is key = value; line " +
+                         first.substr(origin.size() + 1) + ", and " + std::to_string(malformed - 1) +
+                         " more like it)");
+        return false;
+    }
     reader.finish(errors);
+    return malformed == 0;
 }
 
 Study parse_study_ini(std::string_view text, const std::string& origin) {

@@ -40,8 +40,11 @@ namespace mhb {
 std::string study_ini(const Study& study);
 
 // Parses study-file text on top of `study` (a default Study for a file on its own). Errors are
-// appended to `errors`, each as "ORIGIN:LINE: what is wrong"; what could be read is applied.
-void parse_study_file(std::string_view text, const std::string& origin, Study& study,
+// appended to `errors`, each as "ORIGIN:LINE: what is wrong"; what could be read is applied. A
+// text of several lines none of which is `key = value` is one error ("ORIGIN: is not a study
+// file (...)").
+// Returns false when a line is not `key = value`: what the study lacks then says nothing new.
+bool parse_study_file(std::string_view text, const std::string& origin, Study& study,
                       std::vector<std::string>& errors);
 
 // The same, throwing std::invalid_argument with every error (one per line) if there is any.

@@ -171,6 +171,13 @@ std::vector<BadInputCase> catalogue() {
          "run --study-file f.ini --dry-run", 2,
          stderr_says({"mhbench run: f.ini:4: unknown key 'threads' (it is not part of a study: give --threads on the "
                "command line)"})},
+        // Not a study file at all: one line, not one per line of it, and no "no algorithm given".
+        {"printf 'garbage\\001 lines\\nmore junk\\n[x\\n\\377\\376\\n' > f.ini", "run --study-file f.ini --dry-run", 2,
+         stderr_says({"mhbench run: f.ini: is not a study file (no line is key = value; line 1: 'garbage\\x01 lines' is not "
+                      "key = value, and 3 more like it)"})},
+        {"printf '[study]\\nalgorithms pso\\nproblems sphere\\n' > f.ini", "run --study-file f.ini --dry-run", 2,
+         stderr_says({"mhbench run: f.ini: is not a study file (no line is key = value; line 1: sections ('[study]') are "
+                      "not used in study files, and 2 more like it)"})},
         {"printf '[study]\\nalgorithms = random-search\\nproblems = sphere\\niterations = 3\\n' > f.ini",
          "run --study-file f.ini --dry-run", 2,
          stderr_says({"mhbench run: f.ini:1: sections ('[study]') are not used in study files"})},
@@ -202,8 +209,14 @@ std::vector<BadInputCase> catalogue() {
                "  seed = 5, but the stored runs were made with seed = 1",
                "pass --recompute-changed to compute these runs again (keeping every other stored run), "
                   "--overwrite to discard the stored runs and start again, or choose another --out"})},
-        {"", "run --algorithms lshade:r_ninit=1 --problems sphere:dim=2 --evaluations 100 --runs 2 --quiet --out s", 1,
-         mentions("2 of 2 runs failed (all of them)"), "s"},
+        // A population the dimension makes too small, or too large for memory: refused before the
+        // first run, with no study directory made.
+        {"", "run --algorithms lshade:r_ninit=1 --problems sphere:dim=2 --evaluations 100 --runs 2 --quiet --out s", 2,
+         stderr_says({"mhbench run: lshade: initial population round(r_ninit * D) = 2 at D = 2 is smaller than n_min = "
+                      "4; raise 'r_ninit' (the population is too small)"})},
+        {"", "run --algorithms 'lshade:r_ninit=1e4' --problems sphere:dim=10000 --evaluations 100 --out s", 2,
+         one_line("mhbench run: lshade: its population at D = 10000 needs 36800 GB for its points alone, more than "
+                  "this machine's ")},
 
         // ---- run: datasets as problems (pmsm:data=FILE)
         {"", "run --algorithms tlbo --problems pmsm:data=none.csv --iterations 2 --out s", 2,
@@ -321,7 +334,11 @@ std::vector<BadInputCase> catalogue() {
         // An in-box point where |x| products overflow: +inf is a legal value, never NaN.
         {"echo $(yes 1e11 | head -n 30) > p.txt",
          "eval --problem schwefel_2_22:dim=30,bound=1e12 --points p.txt", 0, stderr_says({})},
-        {"", "eval --problem sphere:dim=2 --points - < /dev/null", 0, stderr_says({})},
+        {"", "eval --problem sphere:dim=2 --points - < /dev/null", 1,
+         stderr_says({"mhbench eval: standard input: holds no point (one a line, 2 coordinates separated by spaces or "
+                      "commas)"})},
+        {"printf '# only a comment\\n\\n' > p.txt", "eval --problem sphere:dim=2 --points p.txt", 1,
+         stderr_says({"mhbench eval: p.txt: holds no point (one a line, 2 coordinates separated by spaces or commas)"})},
 
         // ---- plugin-check
         {"", "plugin-check", 2,

@@ -353,20 +353,19 @@ namespace {
 
 TEST(CliRun, AStudyWhoseRunsAllFailExitsNonZeroAndSaysWhyEvenWhenQuiet) {
     const fs::path dir = fresh("all_failed");
-    const CliRunResult r =
-        mhbench("run --algorithms lshade:r_ninit=1 --problems sphere:dim=2 --evaluations 100 --runs 2 "
-                "--quiet --out " +
-                dir.string());
+    // A model that crashes at its first evaluation.
+    const std::string crashing = "--problem \"external:cmd='/usr/bin/python3 " +
+                                 std::string(MHB_TEST_DATA_DIR) +
+                                 "/external/faulty_problem.py crash 1 cli-all-failed'\"";
+    const CliRunResult r = mhbench("run --algorithms tlbo " + crashing +
+                                   " --evaluations 100 --runs 2 --quiet --out " + dir.string());
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("2 of 2 runs failed (all of them)"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("lshade: initial population round(r_ninit * D) = 2 is smaller than n_min = 4"),
-              std::string::npos)
-        << r.err;
+    EXPECT_NE(r.err.find("segmentation fault in the model"), std::string::npos) << r.err;
     // Some failed: the study and its report go on, and stderr still says so.
     const CliRunResult some =
-        mhbench("run --algorithms 'lshade:r_ninit=1 tlbo' --problems sphere:dim=2 --evaluations 100 "
-                "--runs 2 --no-report --out " +
-                fresh("some_failed").string());
+        mhbench("run --algorithms tlbo --problems sphere:dim=2 " + crashing +
+                " --evaluations 100 --runs 2 --no-report --out " + fresh("some_failed").string());
     EXPECT_EQ(some.exit_code, 0) << some.err;
     EXPECT_NE(some.err.find("2 of 4 runs failed; each carries its message in"), std::string::npos)
         << some.err;

@@ -7,6 +7,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "baselines_test_problems.hpp"
+#include "problems/core/spec.hpp"
 #include "problems/problem_registry.hpp"
 
 namespace mhb {
@@ -57,9 +58,28 @@ TEST(BaselinesErrors, LshadeRejectsAnInitialPopulationSmallerThanNmin) {
     Objective objective(*problem, Budget{100, std::nullopt, std::nullopt});
     Rng rng(1);
     EXPECT_EQ(invalid_argument_message([&] { run_to_budget(*optimizer, objective, rng); }),
-              "lshade: initial population round(r_ninit * D) = 2 is smaller than n_min = 4; raise 'r_ninit' "
-              "(the population is too small)");
+              "lshade: initial population round(r_ninit * D) = 2 at D = 2 is smaller than n_min = 4; raise "
+              "'r_ninit' (the population is too small)");
     EXPECT_EQ(objective.evaluations(), 0);
+    // The same line before any run, as a study asks it (Optimizer::refusal), and none at D = 10.
+    EXPECT_EQ(optimizer->refusal(2).value_or(""),
+              invalid_argument_message([&] { run_to_budget(*optimizer, objective, rng); }));
+    EXPECT_FALSE(optimizer->refusal(10).has_value());
+}
+
+TEST(BaselinesErrors, EveryPopulationTooLargeForMemoryIsRefusedBeforeARun) {
+    // At D = 10^6, populations of 10^5 points and more need petabytes; their defaults at D = 10 fit.
+    for (const char* spec : {"pso:np=100000", "tlbo:np=100000", "itlbo:np=100000", "etlbo:np=1000000",
+                             "jaya:np=1000000", "de:np=1000000", "lshade:r_ninit=1e4", "jso:r_ninit=1e4",
+                             "lshade-cnepsin:r_ninit=1e4", "nl-shade-lbc:r_ninit=1e4"}) {
+        const auto huge = builtin_algorithms().create(spec);
+        const std::string name = Spec::parse(spec).name;
+        const auto why = huge->refusal(1000000);
+        ASSERT_TRUE(why.has_value()) << spec;
+        EXPECT_EQ(why->rfind(name + ": its population at D = 1000000 needs ", 0), 0U) << *why;
+        EXPECT_NE(why->find("more than this machine's"), std::string::npos) << *why;
+        EXPECT_FALSE(builtin_algorithms().create(name)->refusal(10).has_value()) << name;
+    }
 }
 
 // A problem that fails on part of its box, as a data-driven problem may (message kept verbatim).

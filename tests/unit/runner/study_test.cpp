@@ -242,6 +242,9 @@ TEST(StudyFile, ReadsConfigSyntaxWithCommentsAndNamesTheKeyOfAnError) {
     EXPECT_EQ(message("seed = -1\n"), "f.ini:1: seed = -1 is not an integer in [0, 2^64)");
     EXPECT_EQ(message("iterations = 3\niterations = 4\n"), "f.ini:2: 'iterations' is given twice");
     EXPECT_EQ(message("algorithm\n"), "f.ini:1: 'algorithm' is not key = value");
+    // Several lines and none of them key = value: not a study file, said in one line.
+    EXPECT_EQ(message("algorithm\nproblem\n"), "f.ini: is not a study file (no line is key = value; line 1: "
+                                               "'algorithm' is not key = value, and 1 more like it)");
 }
 
 TEST(StudyPresets, PaperPresetIsThePapersSetup) {
