@@ -34,6 +34,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "algorithms/cma_run.hpp"
+#include "algorithms/population_limits.hpp"
 
 namespace mhb {
 namespace {
@@ -46,6 +47,15 @@ public:
         : lambda0_(lambda), sigma0_(sigma0), restarts_(restarts) {}
 
     std::string name() const override { return "cmaes"; }
+
+    // The first population's offspring and their steps, and the D x D matrices (C, its
+    // eigenvectors, C^(-1/2) products): restarts that double lambda may still run out later.
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        const auto d = static_cast<double>(dimension);
+        const double lambda =
+            lambda0_ > 0 ? static_cast<double>(lambda0_) : 4.0 + std::floor(3.0 * std::log(d));
+        return population_memory_refusal("cmaes", 2.0 * lambda + 4.0 * d, dimension, "lambda");
+    }
 
     void run(Objective& objective, Rng& rng) const override {
         const Eigen::Index n = objective.dimension();

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "algorithms/algorithm_registry.hpp"
+#include "algorithms/population_limits.hpp"
 #include "algorithms/sampling.hpp"
 
 namespace mhb {
@@ -34,6 +35,11 @@ public:
         : swarm_(swarm), informants_(informants), w_(w), c_(c) {}
 
     std::string name() const override { return "spso2011"; }
+
+    // Positions, velocities, personal bests and the batch of new points.
+    std::optional<std::string> refusal(Eigen::Index dimension) const override {
+        return population_memory_refusal("spso2011", 4.0 * static_cast<double>(swarm_), dimension, "S");
+    }
 
     void run(Objective& objective, Rng& rng) const override {
         const Eigen::Index d = objective.dimension();

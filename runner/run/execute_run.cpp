@@ -1,6 +1,7 @@
 #include "runner/run/execute_run.hpp"
 
 #include <exception>
+#include <new>
 #include <optional>
 
 #include "problems/core/rng.hpp"
@@ -64,6 +65,9 @@ RunRecord execute_run(const RunRequest& request) {
             record.ok = false;
             record.message = "the optimiser made no evaluation";
         }
+    } catch (const std::bad_alloc&) {
+        record.ok = false;
+        record.message = "the run ran out of memory (std::bad_alloc): lower the population or the dimension";
     } catch (const std::exception& e) {
         record.ok = false;
         record.message = e.what();

@@ -69,9 +69,10 @@ TEST(BaselinesErrors, LshadeRejectsAnInitialPopulationSmallerThanNmin) {
 
 TEST(BaselinesErrors, EveryPopulationTooLargeForMemoryIsRefusedBeforeARun) {
     // At D = 10^6, populations of 10^5 points and more need petabytes; their defaults at D = 10 fit.
-    for (const char* spec : {"pso:np=100000", "tlbo:np=100000", "itlbo:np=100000", "etlbo:np=1000000",
-                             "jaya:np=1000000", "de:np=1000000", "lshade:r_ninit=1e4", "jso:r_ninit=1e4",
-                             "lshade-cnepsin:r_ninit=1e4", "nl-shade-lbc:r_ninit=1e4"}) {
+    for (const char* spec :
+         {"pso:np=100000", "tlbo:np=100000", "itlbo:np=100000", "etlbo:np=1000000", "jaya:np=1000000",
+          "de:np=1000000", "lshade:r_ninit=1e4", "jso:r_ninit=1e4", "lshade-cnepsin:r_ninit=1e4",
+          "nl-shade-lbc:r_ninit=1e4", "spso2011:S=1000000", "cmaes:lambda=1000000"}) {
         const auto huge = builtin_algorithms().create(spec);
         const std::string name = Spec::parse(spec).name;
         const auto why = huge->refusal(1000000);
