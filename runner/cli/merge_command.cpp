@@ -190,8 +190,11 @@ int run_merge_command(const std::vector<std::string>& args) {
     const fs::path out = dirs.front();
 
     std::vector<Shard> shards;
-    for (std::size_t i = 1; i < dirs.size(); ++i)
+    for (std::size_t i = 1; i < dirs.size(); ++i) {
         shards.push_back(read_shard(dirs[i]));
+        for (const std::string& warning : shards.back().data.warnings)
+            std::cerr << "mhbench merge: warning: " << warning << '\n';
+    }
     std::map<int, const Shard*> by_index;
     if (const auto errors = shard_set_errors(shards, by_index); !errors.empty()) {
         for (const auto& e : errors)

@@ -70,6 +70,11 @@ const std::string study_copy = "cp -r $F/study s";
 // The same as a study from before the marker held each rendered file's size and checksum, so
 // that an edited file reaches the CSV reader's own checks.
 const std::string old_study_copy = study_copy + " && sed -i '/ bytes, crc32c /d' s/.mhbench-study";
+// The same having lost its marker (as `cp DIR/* NEW/` loses it): store.bin vouches for the rest.
+const std::string unmarked_study_copy = study_copy + " && rm s/.mhbench-study";
+const std::string unmarked_refusal =
+    " (s has no .mhbench-study to vouch for it, so it was checked against store.bin); run the study's "
+    "command again to render it from store.bin";
 
 // clang-format off
 std::vector<BadInputCase> catalogue() {
@@ -353,6 +358,16 @@ std::vector<BadInputCase> catalogue() {
         // runs.csv must be the one rendered for the study.ini beside it (issue 22)
         {study_copy + " && echo '# edited' >> s/study.ini", "report s --no-figures", 1,
          one_line("s/runs.csv: was rendered for another study.ini than the one beside it (crc32c ")},
+        {unmarked_study_copy + " && sed -i '2s/,ok,/,failed,/' s/runs.csv", "report s --no-figures", 1,
+         stderr_says({"mhbench report: s/runs.csv, line 2: differs from store.bin's record of run 0" + unmarked_refusal})},
+        {unmarked_study_copy + " && sed -i '3s/[.]/.9/' s/curves.csv", "report s --no-figures", 1,
+         stderr_says({"mhbench report: s/curves.csv, line 3: differs from store.bin's record of run 0" + unmarked_refusal})},
+        {unmarked_study_copy + " && sed -i '$d' s/timings.csv", "report s --no-figures", 1,
+         stderr_says({"mhbench report: s/timings.csv, line 3: differs from store.bin's record of run 1" + unmarked_refusal})},
+        {unmarked_study_copy + " && sed -i '2s/,random-search,/,pso,/' s/runs.csv", "report s --no-figures", 1,
+         one_line("mhbench report: s/runs.csv, line 2: store.bin holds no run pso, sphere:dim=5, evaluations=200, run 0, seed ")},
+        {unmarked_study_copy + " && echo '1,5,250,1' >> s/curves.csv", "report s --no-figures", 1,
+         stderr_says({"mhbench report: s/curves.csv, line 10: goes on after the last run of runs.csv" + unmarked_refusal})},
         {old_study_copy + " && sed -i '$d' s/runs.csv", "report s --no-figures", 1,
          stderr_says({"mhbench report: s/runs.csv: has 1 row, but the study it was rendered for has 2 runs"})},
         // an error inside finish() leaves no .tmp file (issue 22)
