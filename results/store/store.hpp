@@ -66,8 +66,9 @@ struct StudyFiles {
     static constexpr const char* store = "store.bin";
     // Format 2 (before store.bin): the journal of an unfinished study, keyed by run_id.
     static constexpr const char* journal = "journal.txt";
-    // The advisory lock of the one process writing the directory (runner/execution/study_lock.hpp); not
-    // a record: present only while a writer holds it, or after one was killed.
+    // Names the one process writing the directory, whose advisory lock is on the directory itself
+    // (runner/execution/study_lock.hpp); not a record: present only while a writer holds the lock,
+    // or after one was killed.
     static constexpr const char* lock = ".mhbench.lock";
 };
 

@@ -75,6 +75,10 @@ const std::string unmarked_study_copy = study_copy + " && rm s/.mhbench-study";
 const std::string unmarked_refusal =
     " (s has no .mhbench-study to vouch for it, so it was checked against store.bin); run the study's "
     "command again to render it from store.bin";
+// Shards 1/2 and 2/2 of a small study, in directories 1 and 2.
+const std::string two_shards = "M='" MHB_CLI_PATH "'; for i in 1 2; do $M run --algorithms random-search "
+                               "--problems sphere:dim=2 --runs 2 --evaluations 100 --quiet --shard $i/2 "
+                               "--out $i || exit 1; done";
 
 // clang-format off
 std::vector<BadInputCase> catalogue() {
@@ -391,20 +395,25 @@ std::vector<BadInputCase> catalogue() {
         {study_copy + " && mkdir t && cp s/.mhbench-study t/", "report s --out t --no-figures", 1,
          one_line("mhbench report: --out t is a study directory")},
 
-        // ---- a study directory another process writes (its lock held here by flock(1) on fd 9)
+        // ---- a study directory another process writes (its lock, on the directory, held here by
+        // flock(1) on fd 9)
         {study_copy + " && printf 'command = mhbench run\\npid = 1234\\nhost = node7\\nsince = 2026-11-26 "
                       "07:55:01 UTC\\n' > s/.mhbench.lock",
-         "(exec 9<s/.mhbench.lock && flock -n 9 && mhbench report s --no-figures)", 1,
+         "(exec 9<s && flock -n 9 && mhbench report s --no-figures)", 1,
          stderr_says({"mhbench report: s is in use by mhbench run (pid 1234 on host node7, since 2026-11-26 07:55:01 "
                "UTC); wait for it, or give --out a directory outside the study"})},
         {study_copy + " && printf 'command = mhbench run\\npid = 1234\\nhost = node7\\nsince = 2026-11-26 "
                       "07:55:01 UTC\\n' > s/.mhbench.lock",
-         "(exec 9<s/.mhbench.lock && flock -n 9 && mhbench run --algorithms random-search" + tiny_run + ")", 1,
+         "(exec 9<s && flock -n 9 && mhbench run --algorithms random-search" + tiny_run + ")", 1,
          stderr_says({"mhbench run: s is in use by mhbench run (pid 1234 on host node7, since 2026-11-26 07:55:01 "
                "UTC); wait for it or use another --out"})},
-        {"M='" MHB_CLI_PATH "'; for i in 1 2; do $M run --algorithms random-search --problems sphere:dim=2 "
-         "--runs 2 --evaluations 100 --quiet --shard $i/2 --out $i || exit 1; done; mkdir o && : > o/.mhbench.lock",
-         "(exec 9<o/.mhbench.lock && flock -n 9 && mhbench merge o 1 2 --no-report)", 1,
+        // its lock file deleted (or not written yet): the lock on the directory holds all the same
+        {study_copy, "(exec 9<s && flock -n 9 && mhbench run --algorithms random-search" + tiny_run + ")", 1,
+         stderr_says({"mhbench run: s is in use by another mhbench process; wait for it or use another --out"})},
+        {study_copy, "(exec 9<s && flock -n 9 && mhbench report s --no-figures)", 1,
+         stderr_says({"mhbench report: s is in use by another mhbench process; wait for it, or give --out a "
+               "directory outside the study"})},
+        {two_shards + "; mkdir o && : > o/.mhbench.lock", "(exec 9<o && flock -n 9 && mhbench merge o 1 2 --no-report)", 1,
          stderr_says({"mhbench merge: o is in use by another mhbench process; wait for it or choose another OUT"})},
         {study_copy + " && echo x > file", "report s --no-figures --out file/r", 1, one_line("file/r")},
         {study_copy, "(trap '' XFSZ; ulimit -f 1; mhbench report s --no-figures)", 1,
