@@ -420,6 +420,19 @@ std::vector<BadInputCase> catalogue() {
          one_line(": cannot be written (File too large)")},
 
         // ---- merge
+        {two_shards, "merge 1 1 2 --no-report", 2,
+         stderr_says({"mhbench merge: OUT 1 is one of the shard directories to merge (1); give another OUT"})},
+        {two_shards, "merge ./2 1 2 --no-report --overwrite", 2,
+         stderr_says({"mhbench merge: OUT ./2 is one of the shard directories to merge (2); give another OUT"})},
+        {two_shards + " && cp -r 1 o", "merge o 1 2 --no-report", 1,
+         stderr_says({"mhbench merge: OUT o holds a study (.mhbench-study); pass --overwrite to replace it, or give "
+               "another OUT"})},
+        {two_shards + " && " + study_copy, "merge s 1 2 --no-report", 1,
+         stderr_says({"mhbench merge: OUT s holds a study (.mhbench-study); pass --overwrite to replace it, or give "
+               "another OUT"})},
+        {two_shards + " && " + study_copy + " && rm s/.mhbench-study", "merge s 1 2 --no-report", 1,
+         stderr_says({"mhbench merge: OUT s holds a study (study.ini); pass --overwrite to replace it, or give "
+               "another OUT"})},
         {"cp -r $F/shard1 s1 && cp -r $F/shard2 s2", "merge m s1 s2 --no-report", 1,
          mentions("/drive.csv: sha256 ")}, // the file and both hashes (tests/integration/shards_test.cpp)
 
