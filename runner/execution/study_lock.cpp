@@ -67,9 +67,12 @@ bool cannot_lock_directories(int error) {
     return error == EBADF || error == ENOLCK || error == EOPNOTSUPP || error == EINVAL;
 }
 
-// `dir` opened and flocked, or -1 when its filesystem cannot lock a directory.
+// `dir` opened and flocked, or -1 when it cannot be locked so (its filesystem cannot lock a
+// directory, or it cannot be opened for reading).
 int lock_directory(const std::filesystem::path& dir) {
     const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0 && errno == EACCES) // a directory one may write but not list: its lock file will do
+        return -1;
     if (fd < 0)
         throw std::runtime_error(system_error(dir, "cannot be opened", errno));
     if (::flock(fd, LOCK_EX | LOCK_NB) == 0)

@@ -7,9 +7,10 @@
 //
 // The kernel drops a flock when its holder dies, even by kill -9: the file a dead holder leaves
 // behind names it but locks nothing, and the next writer takes it over. Where a directory cannot
-// be flocked (NFS: Linux maps flock onto fcntl locks, which need a file open for writing), the
-// lock falls back to a flock of DIR/.mhbench.lock itself, as mhbench did before: it works across
-// machines, but deleting the file while a study runs lets a second writer in.
+// be flocked (NFS: Linux maps flock onto fcntl locks, which need a file open for writing) or
+// opened for reading (write and search permission only), the lock falls back to a flock of
+// DIR/.mhbench.lock itself, as mhbench did before: it works across machines, but deleting the
+// file while a study runs lets a second writer in.
 #pragma once
 
 #include <filesystem>
