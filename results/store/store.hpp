@@ -21,9 +21,9 @@
 //   .mhbench-study   the marker (below); once finished, the study.ini and run count runs.csv was
 //                    rendered for, and the size and CRC-32C of each rendered file (RenderedFile)
 //
-// A directory is a study when it holds .mhbench-study (or, from before that marker, study.ini
-// with runs.csv or journal.txt); it is a finished study exactly when runs.csv exists, written
-// last, by rename, and removed first whenever the study is changed. Studies written before
+// A directory is a study when it holds .mhbench-study (or, from before that marker or having lost
+// it, study.ini with runs.csv, store.bin or journal.txt); it is a finished study exactly when runs.csv
+// exists, written last, by rename, and removed first whenever the study is changed. Studies written before
 // store.bin (format 2: journal.txt keyed by run_id) are read, but not resumed or extended.
 #pragma once
 
@@ -66,8 +66,9 @@ struct StudyFiles {
     static constexpr const char* store = "store.bin";
     // Format 2 (before store.bin): the journal of an unfinished study, keyed by run_id.
     static constexpr const char* journal = "journal.txt";
-    // The advisory lock of the one process writing the directory (runner/execution/study_lock.hpp); not
-    // a record: present only while a writer holds it, or after one was killed.
+    // Names the one process writing the directory, whose advisory lock is on the directory itself
+    // (runner/execution/study_lock.hpp); not a record: present only while a writer holds the lock,
+    // or after one was killed.
     static constexpr const char* lock = ".mhbench.lock";
 };
 
@@ -275,10 +276,15 @@ struct StudyData {
     std::vector<AlgorithmInfo> algorithms;
     std::vector<RunRecord> runs; // sorted by run_id, with curve, checkpoints and improvements filled in
     std::map<std::int64_t, double> wall_seconds;
+    // What the reader has to say about the directory, one line each: a study without its marker.
+    std::vector<std::string> warnings;
 };
 
 // Reads a finished study directory. Throws std::runtime_error naming the file (and line) when
-// a file is missing, truncated or malformed, or when the directory holds an unfinished study.
+// a file is missing, truncated or malformed, or when the directory holds an unfinished study. The
+// rendered files must be those the marker names (size and CRC-32C); without a marker, those of a
+// study with store.bin must be what it renders (store_check.hpp), and a study of format 2 (no
+// store.bin) is read as it is.
 StudyData load_study(const std::filesystem::path& dir);
 
 } // namespace mhb

@@ -32,8 +32,10 @@ bool is_study_directory(const fs::path& dir) {
     std::error_code ec;
     if (fs::exists(dir / StudyFiles::marker, ec))
         return true;
+    // Without the marker (from before it, or lost): the study.ini and records of a study.
     return fs::exists(dir / StudyFiles::study, ec) &&
-           (fs::exists(dir / StudyFiles::runs, ec) || fs::exists(dir / StudyFiles::journal, ec));
+           (fs::exists(dir / StudyFiles::runs, ec) || fs::exists(dir / StudyFiles::store, ec) ||
+            fs::exists(dir / StudyFiles::journal, ec));
 }
 
 } // namespace mhb

@@ -9,6 +9,7 @@
 #include "results/store/crc32c.hpp"
 #include "results/store/csv.hpp"
 #include "results/store/store.hpp"
+#include "results/store/store_check.hpp"
 
 namespace mhb {
 namespace fs = std::filesystem;
@@ -302,6 +303,15 @@ StudyData load_study(const fs::path& dir) {
     if (fs::exists(dir / StudyFiles::improvements))
         read_improvements_csv(read_rendered_csv(dir, StudyFiles::improvements, marker), index, data);
     read_timings(read_rendered_csv(dir, StudyFiles::timings, marker), index, data);
+    // Without its marker (deleted, or not copied: `cp DIR/* NEW/` skips dot-files) nothing vouches
+    // for the rendered files but the store they were rendered from.
+    if (marker.empty() && fs::exists(dir / StudyFiles::store)) {
+        check_rendered_files_against_store(dir, data, runs.line_numbers);
+        data.warnings.push_back(dir.string() + ": has no " + StudyFiles::marker +
+                                "; its files were checked against store.bin instead (they match, but their "
+                                "number of runs is not checked against study.ini); run the study's command "
+                                "again to restore it");
+    }
     return data;
 }
 

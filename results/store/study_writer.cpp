@@ -73,13 +73,15 @@ StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string conte
     check_changes(overwrite);
     warn_damaged();
 
-    // A changed study is unfinished until finish() writes its files again.
+    // A changed study is unfinished until finish() writes its files again; so is one that lost its
+    // marker, which alone vouched for the rendered files.
     const bool same_study =
         fs::exists(dir_ / StudyFiles::study) && read_whole_file(dir_ / StudyFiles::study) == study_text;
-    if (!same_study)
+    const bool has_marker = fs::exists(dir_ / StudyFiles::marker);
+    if (!same_study || !has_marker)
         fs::remove(dir_ / StudyFiles::runs, ec);
     // A finished study's marker names its study.ini: kept while that study stays.
-    if (!same_study || !fs::exists(dir_ / StudyFiles::marker))
+    if (!same_study || !has_marker)
         write_file_atomically(dir_ / StudyFiles::marker, study_marker(study_text));
     write_file_atomically(dir_ / StudyFiles::study, study_text);
     write_file_atomically(dir_ / StudyFiles::context, context_text);

@@ -151,14 +151,42 @@ std::string merged_context(const std::map<int, const Shard*>& by_index, const Pr
     return context_with_history(context + context_data_files(prepared.problems), shard_sessions);
 }
 
+// Why OUT cannot take the merged study, or nothing. One of the shards would lose the runs the merge
+// reads (always refused); a directory holding a study would lose its study, which needs
+// --overwrite to say so. Paths are compared as files, not as text (./s1 and s1 are one).
+struct OutRefusal {
+    std::string message;
+    int exit_code = exit_failure;
+};
+std::optional<OutRefusal> refuse_out(const fs::path& out, const std::vector<std::string>& dirs,
+                                     bool overwrite) {
+    std::error_code ec;
+    for (std::size_t i = 1; i < dirs.size(); ++i)
+        if (fs::equivalent(out, dirs[i], ec))
+            return OutRefusal{"OUT " + out.string() + " is one of the shard directories to merge (" +
+                                  dirs[i] + "); give another OUT",
+                              exit_usage};
+    if (overwrite)
+        return std::nullopt;
+    for (const char* record : {StudyFiles::marker, StudyFiles::study, StudyFiles::store})
+        if (fs::exists(out / record, ec))
+            return OutRefusal{"OUT " + out.string() + " holds a study (" + record +
+                                  "); pass --overwrite to replace it, or give another OUT",
+                              exit_failure};
+    return std::nullopt;
+}
+
 po::options_description merge_options() {
     po::options_description visible(
         "Usage: mhbench merge OUT DIR... [options]\n\n"
         "Joins the n shard directories of one study (each made by mhbench run --shard i/n --out DIR)\n"
         "into the study directory OUT, with the records one process would have written, byte for\n"
         "byte, then builds its report. The shards must all be finished, of the same study, and be\n"
-        "shards 1..n each exactly once.\n\nOptions");
-    visible.add_options()("help,h", "this text")("overwrite", po::bool_switch(), "replace a study in OUT")(
+        "shards 1..n each exactly once. OUT is never one of them, and a directory that holds a study\n"
+        "is refused unless --overwrite.\n\nOptions");
+    visible.add_options()("help,h", "this text")(
+        "overwrite", po::bool_switch(),
+        "replace the study OUT holds (its store.bin, records and context.ini) with the merged one")(
         "threads", po::value<int>()->default_value(0), "recorded in context.ini (merging uses one)")(
         "no-report", po::bool_switch(), "do not build the report")(
         "no-figures", po::bool_switch(), "build the report without figures")("quiet,q", po::bool_switch(),
@@ -188,10 +216,17 @@ int run_merge_command(const std::vector<std::string>& args) {
         return exit_usage;
     }
     const fs::path out = dirs.front();
+    if (const auto refusal = refuse_out(out, dirs, vm["overwrite"].as<bool>())) {
+        std::cerr << "mhbench merge: " << refusal->message << '\n';
+        return refusal->exit_code;
+    }
 
     std::vector<Shard> shards;
-    for (std::size_t i = 1; i < dirs.size(); ++i)
+    for (std::size_t i = 1; i < dirs.size(); ++i) {
         shards.push_back(read_shard(dirs[i]));
+        for (const std::string& warning : shards.back().data.warnings)
+            std::cerr << "mhbench merge: warning: " << warning << '\n';
+    }
     std::map<int, const Shard*> by_index;
     if (const auto errors = shard_set_errors(shards, by_index); !errors.empty()) {
         for (const auto& e : errors)
@@ -226,6 +261,7 @@ int run_merge_command(const std::vector<std::string>& args) {
                        merged_context(by_index, prepared, vm["threads"].as<int>(), args),
                        prepared.parameter_columns, vm["overwrite"].as<bool>(), prepared.algorithms,
                        study_run_keys(prepared));
+    fs::remove(out / StudyFiles::shard); // the merged study is whole, even where a shard was replaced
     for (const auto& [index, shard] : by_index)
         for (const auto& record : shard->data.runs) {
             const auto wall = shard->data.wall_seconds.find(record.run_id);

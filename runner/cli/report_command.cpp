@@ -181,6 +181,8 @@ int write_report(const std::string& study_dir, const std::filesystem::path& repo
         }
     }
     const StudyData study = load_study(study_dir);
+    for (const std::string& warning : study.warnings)
+        std::cerr << "mhbench report: warning: " << warning << '\n';
     // A report that fails prints nothing and leaves no report folder it made (its files are each
     // written whole, so a folder that existed holds whole files only).
     std::error_code ec;

@@ -1,10 +1,16 @@
-// One writer per study directory: an advisory lock (flock(2)) on DIR/.mhbench.lock, held by
+// One writer per study directory: an advisory lock (flock(2)) on the directory DIR itself, held by
 // `mhbench run`, `mhbench merge` (on its output) and `mhbench report` when it writes into the
-// study. A second process is refused at once, with a line naming the holder, and touches nothing.
+// study, for as long as they write. DIR/.mhbench.lock is only the text naming the holder (command,
+// pid, host, since) for the refusal: deleting it defeats nothing, since the lock is on DIR. A
+// second process is refused at once, with a line naming the holder ("another mhbench process" when
+// the file is gone), and touches nothing.
 //
 // The kernel drops a flock when its holder dies, even by kill -9: the file a dead holder leaves
-// behind names it but locks nothing, and the next writer takes it over. flock works across
-// machines on NFS too (Linux maps it onto fcntl locks, which NFS servers honour).
+// behind names it but locks nothing, and the next writer takes it over. Where a directory cannot
+// be flocked (NFS: Linux maps flock onto fcntl locks, which need a file open for writing) or
+// opened for reading (write and search permission only), the lock falls back to a flock of
+// DIR/.mhbench.lock itself, as mhbench did before: it works across machines, but deleting the
+// file while a study runs lets a second writer in.
 #pragma once
 
 #include <filesystem>
@@ -27,8 +33,8 @@ public:
     static constexpr const char* file_name = StudyFiles::lock;
 
     // Takes the lock of `dir` (made if missing) for `command` ("mhbench run"), without waiting.
-    // Throws StudyInUse when another process holds it, std::runtime_error when the lock file
-    // cannot be made (a read-only directory, say).
+    // Throws StudyInUse when another process holds it, std::runtime_error when the directory
+    // cannot be locked or the lock file cannot be written (a read-only directory, say).
     StudyLock(const std::filesystem::path& dir, const std::string& command);
     // Removes the lock file, then releases the lock (and the directory, when this lock made it
     // and nothing else was put there).
@@ -39,7 +45,8 @@ public:
 private:
     std::filesystem::path dir_;
     std::filesystem::path path_;
-    int fd_ = -1;
+    int fd_ = -1;          // what is locked: the directory, or where it cannot be, the lock file
+    bool on_file_ = false; // the fallback: fd_ is the lock file
     bool made_dir_ = false;
 };
 

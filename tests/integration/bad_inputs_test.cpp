@@ -70,6 +70,15 @@ const std::string study_copy = "cp -r $F/study s";
 // The same as a study from before the marker held each rendered file's size and checksum, so
 // that an edited file reaches the CSV reader's own checks.
 const std::string old_study_copy = study_copy + " && sed -i '/ bytes, crc32c /d' s/.mhbench-study";
+// The same having lost its marker (as `cp DIR/* NEW/` loses it): store.bin vouches for the rest.
+const std::string unmarked_study_copy = study_copy + " && rm s/.mhbench-study";
+const std::string unmarked_refusal =
+    " (s has no .mhbench-study to vouch for it, so it was checked against store.bin); run the study's "
+    "command again to render it from store.bin";
+// Shards 1/2 and 2/2 of a small study, in directories 1 and 2.
+const std::string two_shards = "M='" MHB_CLI_PATH "'; for i in 1 2; do $M run --algorithms random-search "
+                               "--problems sphere:dim=2 --runs 2 --evaluations 100 --quiet --shard $i/2 "
+                               "--out $i || exit 1; done";
 
 // clang-format off
 std::vector<BadInputCase> catalogue() {
@@ -370,6 +379,16 @@ std::vector<BadInputCase> catalogue() {
         // runs.csv must be the one rendered for the study.ini beside it (issue 22)
         {study_copy + " && echo '# edited' >> s/study.ini", "report s --no-figures", 1,
          one_line("s/runs.csv: was rendered for another study.ini than the one beside it (crc32c ")},
+        {unmarked_study_copy + " && sed -i '2s/,ok,/,failed,/' s/runs.csv", "report s --no-figures", 1,
+         stderr_says({"mhbench report: s/runs.csv, line 2: differs from store.bin's record of run 0" + unmarked_refusal})},
+        {unmarked_study_copy + " && sed -i '3s/[.]/.9/' s/curves.csv", "report s --no-figures", 1,
+         stderr_says({"mhbench report: s/curves.csv, line 3: differs from store.bin's record of run 0" + unmarked_refusal})},
+        {unmarked_study_copy + " && sed -i '$d' s/timings.csv", "report s --no-figures", 1,
+         stderr_says({"mhbench report: s/timings.csv, line 3: differs from store.bin's record of run 1" + unmarked_refusal})},
+        {unmarked_study_copy + " && sed -i '2s/,random-search,/,pso,/' s/runs.csv", "report s --no-figures", 1,
+         one_line("mhbench report: s/runs.csv, line 2: store.bin holds no run pso, sphere:dim=5, evaluations=200, run 0, seed ")},
+        {unmarked_study_copy + " && echo '1,5,250,1' >> s/curves.csv", "report s --no-figures", 1,
+         stderr_says({"mhbench report: s/curves.csv, line 10: goes on after the last run of runs.csv" + unmarked_refusal})},
         {old_study_copy + " && sed -i '$d' s/runs.csv", "report s --no-figures", 1,
          stderr_says({"mhbench report: s/runs.csv: has 1 row, but the study it was rendered for has 2 runs"})},
         // an error inside finish() leaves no .tmp file (issue 22)
@@ -393,26 +412,44 @@ std::vector<BadInputCase> catalogue() {
         {study_copy + " && mkdir t && cp s/.mhbench-study t/", "report s --out t --no-figures", 1,
          one_line("mhbench report: --out t is a study directory")},
 
-        // ---- a study directory another process writes (its lock held here by flock(1) on fd 9)
+        // ---- a study directory another process writes (its lock, on the directory, held here by
+        // flock(1) on fd 9)
         {study_copy + " && printf 'command = mhbench run\\npid = 1234\\nhost = node7\\nsince = 2026-11-26 "
                       "07:55:01 UTC\\n' > s/.mhbench.lock",
-         "(exec 9<s/.mhbench.lock && flock -n 9 && mhbench report s --no-figures)", 1,
+         "(exec 9<s && flock -n 9 && mhbench report s --no-figures)", 1,
          stderr_says({"mhbench report: s is in use by mhbench run (pid 1234 on host node7, since 2026-11-26 07:55:01 "
                "UTC); wait for it, or give --out a directory outside the study"})},
         {study_copy + " && printf 'command = mhbench run\\npid = 1234\\nhost = node7\\nsince = 2026-11-26 "
                       "07:55:01 UTC\\n' > s/.mhbench.lock",
-         "(exec 9<s/.mhbench.lock && flock -n 9 && mhbench run --algorithms random-search" + tiny_run + ")", 1,
+         "(exec 9<s && flock -n 9 && mhbench run --algorithms random-search" + tiny_run + ")", 1,
          stderr_says({"mhbench run: s is in use by mhbench run (pid 1234 on host node7, since 2026-11-26 07:55:01 "
                "UTC); wait for it or use another --out"})},
-        {"M='" MHB_CLI_PATH "'; for i in 1 2; do $M run --algorithms random-search --problems sphere:dim=2 "
-         "--runs 2 --evaluations 100 --quiet --shard $i/2 --out $i || exit 1; done; mkdir o && : > o/.mhbench.lock",
-         "(exec 9<o/.mhbench.lock && flock -n 9 && mhbench merge o 1 2 --no-report)", 1,
+        // its lock file deleted (or not written yet): the lock on the directory holds all the same
+        {study_copy, "(exec 9<s && flock -n 9 && mhbench run --algorithms random-search" + tiny_run + ")", 1,
+         stderr_says({"mhbench run: s is in use by another mhbench process; wait for it or use another --out"})},
+        {study_copy, "(exec 9<s && flock -n 9 && mhbench report s --no-figures)", 1,
+         stderr_says({"mhbench report: s is in use by another mhbench process; wait for it, or give --out a "
+               "directory outside the study"})},
+        {two_shards + "; mkdir o && : > o/.mhbench.lock", "(exec 9<o && flock -n 9 && mhbench merge o 1 2 --no-report)", 1,
          stderr_says({"mhbench merge: o is in use by another mhbench process; wait for it or choose another OUT"})},
         {study_copy + " && echo x > file", "report s --no-figures --out file/r", 1, one_line("file/r")},
         {study_copy, "(trap '' XFSZ; ulimit -f 1; mhbench report s --no-figures)", 1,
          one_line(": cannot be written (File too large)")},
 
         // ---- merge
+        {two_shards, "merge 1 1 2 --no-report", 2,
+         stderr_says({"mhbench merge: OUT 1 is one of the shard directories to merge (1); give another OUT"})},
+        {two_shards, "merge ./2 1 2 --no-report --overwrite", 2,
+         stderr_says({"mhbench merge: OUT ./2 is one of the shard directories to merge (2); give another OUT"})},
+        {two_shards + " && cp -r 1 o", "merge o 1 2 --no-report", 1,
+         stderr_says({"mhbench merge: OUT o holds a study (.mhbench-study); pass --overwrite to replace it, or give "
+               "another OUT"})},
+        {two_shards + " && " + study_copy, "merge s 1 2 --no-report", 1,
+         stderr_says({"mhbench merge: OUT s holds a study (.mhbench-study); pass --overwrite to replace it, or give "
+               "another OUT"})},
+        {two_shards + " && " + study_copy + " && rm s/.mhbench-study", "merge s 1 2 --no-report", 1,
+         stderr_says({"mhbench merge: OUT s holds a study (study.ini); pass --overwrite to replace it, or give "
+               "another OUT"})},
         {"cp -r $F/shard1 s1 && cp -r $F/shard2 s2", "merge m s1 s2 --no-report", 1,
          mentions("/drive.csv: sha256 ")}, // the file and both hashes (tests/integration/shards_test.cpp)
 

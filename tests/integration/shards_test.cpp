@@ -86,15 +86,23 @@ TEST(Shards, TheSplitIsDeterministicCompleteAndBalancedByCost) {
     EXPECT_THROW((void)mhb::parse_shard("1-3"), std::invalid_argument);
 }
 
-TEST(Shards, MergeRefusesOtherStudiesDuplicatesMissingAndUnfinishedShards) {
+// Shards 1/2 and 2/2 of the study, in directories `name`1 and `name`2; fewer when one failed.
+std::vector<fs::path> shards_of_two(const std::string& name) {
     std::vector<fs::path> shards;
     for (int i = 1; i <= 2; ++i) {
-        shards.push_back(fresh_shards_dir("pair" + std::to_string(i)));
-        ASSERT_EQ(run_mhbench("run " + study_options + "--shard " + std::to_string(i) + "/2 --out " +
-                              shards.back().string())
-                      .exit_code,
-                  0);
+        const fs::path dir = fresh_shards_dir(name + std::to_string(i));
+        const auto r =
+            run_mhbench("run " + study_options + "--shard " + std::to_string(i) + "/2 --out " + dir.string());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        if (r.exit_code == 0)
+            shards.push_back(dir);
     }
+    return shards;
+}
+
+TEST(Shards, MergeRefusesOtherStudiesDuplicatesMissingAndUnfinishedShards) {
+    const std::vector<fs::path> shards = shards_of_two("pair");
+    ASSERT_EQ(shards.size(), 2u);
     const fs::path other = fresh_shards_dir("other");
     ASSERT_EQ(run_mhbench("run " + study_options + "--seed 2 --shard 2/2 --out " + other.string()).exit_code,
               0);
@@ -132,6 +140,54 @@ TEST(Shards, MergeRefusesOtherStudiesDuplicatesMissingAndUnfinishedShards) {
 } // namespace
 
 namespace {
+
+// Issue 34: `mhbench merge S1 S1 S2` would leave S1 the whole study with a shard.txt of 1/2, and
+// a merge into a finished study would replace it unasked. OUT that is one of the shards (as a file,
+// not as text) is always refused, OUT that holds a study unless --overwrite, each in one line
+// with nothing touched; --overwrite replaces OUT's study with the merged one.
+TEST(Shards, MergeRefusesAnOutThatIsOneOfItsShardsOrHoldsAStudyUnlessOverwrite) {
+    const std::vector<fs::path> shards = shards_of_two("own");
+    ASSERT_EQ(shards.size(), 2u);
+    const std::string a = shards[0].string();
+    const std::string b = shards[1].string();
+    const std::string a_runs = read_text(shards[0] / "runs.csv");
+    const auto into_a = run_mhbench("merge " + a + " " + a + " " + b + " --no-report");
+    EXPECT_EQ(into_a.exit_code, 2);
+    EXPECT_EQ(into_a.err, "mhbench merge: OUT " + a + " is one of the shard directories to merge (" + a +
+                              "); give another OUT\n");
+    const std::string b_as_written = (shards[1].parent_path() / "." / shards[1].filename()).string();
+    const auto into_b = run_mhbench("merge " + b_as_written + " " + a + " " + b + " --no-report --overwrite");
+    EXPECT_EQ(into_b.exit_code, 2);
+    EXPECT_EQ(into_b.err, "mhbench merge: OUT " + b_as_written +
+                              " is one of the shard directories to merge (" + b + "); give another OUT\n");
+    EXPECT_EQ(read_text(shards[0] / "runs.csv"), a_runs);
+    EXPECT_EQ(read_text(shards[0] / "shard.txt"), "shard = 1/2\n");
+
+    // A finished study of its own, and a copy of a shard: refused, then replaced with --overwrite.
+    const fs::path other = fresh_shards_dir("own_other");
+    ASSERT_EQ(run_mhbench("run " + study_options + "--seed 2 --no-report --out " + other.string()).exit_code,
+              0);
+    const std::string other_runs = read_text(other / "runs.csv");
+    const auto into_other = run_mhbench("merge " + other.string() + " " + a + " " + b + " --no-report");
+    EXPECT_EQ(into_other.exit_code, 1);
+    EXPECT_EQ(into_other.err, "mhbench merge: OUT " + other.string() +
+                                  " holds a study (.mhbench-study); pass --overwrite to replace it, or give "
+                                  "another OUT\n");
+    EXPECT_EQ(read_text(other / "runs.csv"), other_runs);
+    const fs::path merged = fresh_shards_dir("own_merged");
+    ASSERT_EQ(run_mhbench("merge " + merged.string() + " " + a + " " + b + " --no-report").exit_code, 0);
+    const auto replaced =
+        run_mhbench("merge " + other.string() + " " + a + " " + b + " --no-report --overwrite");
+    ASSERT_EQ(replaced.exit_code, 0) << replaced.err;
+    for (const char* file : {"runs.csv", "curves.csv", "study.ini", "algorithms.csv", ".mhbench-study"})
+        EXPECT_EQ(read_text(other / file), read_text(merged / file)) << file;
+    const fs::path copy = fresh_shards_dir("own_copy");
+    fs::copy(shards[0], copy);
+    ASSERT_EQ(
+        run_mhbench("merge " + copy.string() + " " + a + " " + b + " --no-report --overwrite").exit_code, 0);
+    EXPECT_EQ(read_text(copy / "runs.csv"), read_text(merged / "runs.csv"));
+    EXPECT_FALSE(fs::exists(copy / "shard.txt")) << "the merged study is whole";
+}
 
 // The issue's case: shard 1/2 on drive.csv, the file regenerated, shard 2/2, merge. study.ini names
 // the same path for both; the hashes the shards recorded tell them apart.

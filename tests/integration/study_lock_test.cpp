@@ -25,6 +25,24 @@ fs::path fresh_lock_dir(const std::string& name) {
 const std::string slow_study = "--algorithms 'random-search:batch=50 tlbo' --problems 'sphere:dim=4 pmsm' "
                                "--evaluations 100000 --runs 40 --threads 2 --quiet --no-report";
 
+// A shell script: a first run of slow_study into `dir`; once it has written its lock and its first
+// run, `meanwhile`, then a second run (stderr in logs/run.err) and a report (logs/report.err) into
+// `dir`, each printing its exit status ("run=1"), with `dir` listed before them (logs/before) and
+// after (logs/after); then the first's pid ("pid=...") and exit status ("first=0").
+std::string while_the_first_writes(const fs::path& dir, const fs::path& logs, const std::string& meanwhile) {
+    const std::string first =
+        std::string("'") + MHB_CLI_PATH + "' run " + slow_study + " --out '" + dir.string() + "'";
+    const std::string lock = (dir / ".mhbench.lock").string();
+    return first + " & pid=$!; i=0; while ! ( grep -q '^pid = ' '" + lock + "' && [ -s '" +
+           (dir / "store.bin").string() +
+           "' ] ) 2>/dev/null && [ $i -lt 3000 ]; do sleep 0.01; i=$((i+1)); done; " + meanwhile +
+           "; ls -A '" + dir.string() + "' > '" + (logs / "before").string() + "'; " + first + " 2>'" +
+           (logs / "run.err").string() + "'; echo \"run=$?\"; '" + MHB_CLI_PATH + "' report '" +
+           dir.string() + "' --no-figures >/dev/null 2>'" + (logs / "report.err").string() +
+           "'; echo \"report=$?\"; ls -A '" + dir.string() + "' > '" + (logs / "after").string() +
+           "'; echo \"pid=$pid\"; wait $pid; echo \"first=$?\"";
+}
+
 TEST(StudyLock, ASecondWriterIsRefusedWhileTheFirstRunsAndTheFirstEndsAsACleanRun) {
     const fs::path dir = fresh_lock_dir("shared");
     const fs::path reference = fresh_lock_dir("reference");
@@ -32,19 +50,9 @@ TEST(StudyLock, ASecondWriterIsRefusedWhileTheFirstRunsAndTheFirstEndsAsACleanRu
     fs::create_directories(logs);
     ASSERT_EQ(run_mhbench("run " + slow_study + " --out '" + reference.string() + "'").exit_code, 0);
 
-    const std::string first =
-        std::string("'") + MHB_CLI_PATH + "' run " + slow_study + " --out '" + dir.string() + "'";
     const std::string lock = (dir / ".mhbench.lock").string();
-    // The second run and the report start once the first has written its lock and its first run.
-    const auto r = run_shell(
-        first + " & pid=$!; i=0; while ! ( grep -q '^pid = ' '" + lock + "' && [ -s '" +
-        (dir / "store.bin").string() +
-        "' ] ) 2>/dev/null && [ $i -lt 3000 ]; do sleep 0.01; i=$((i+1)); done; cp '" + lock + "' '" +
-        (logs / "lock").string() + "'; ls -A '" + dir.string() + "' > '" + (logs / "before").string() +
-        "'; " + first + " 2>'" + (logs / "run.err").string() + "'; echo \"run=$?\"; '" + MHB_CLI_PATH +
-        "' report '" + dir.string() + "' --no-figures >/dev/null 2>'" + (logs / "report.err").string() +
-        "'; echo \"report=$?\"; ls -A '" + dir.string() + "' > '" + (logs / "after").string() +
-        "'; echo \"pid=$pid\"; wait $pid; echo \"first=$?\"");
+    const auto r =
+        run_shell(while_the_first_writes(dir, logs, "cp '" + lock + "' '" + (logs / "lock").string() + "'"));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::smatch pid;
     ASSERT_TRUE(std::regex_search(r.out, pid, std::regex("pid=([0-9]+)"))) << r.out;
@@ -74,6 +82,32 @@ TEST(StudyLock, ASecondWriterIsRefusedWhileTheFirstRunsAndTheFirstEndsAsACleanRu
     EXPECT_FALSE(fs::exists(dir / ".mhbench.lock")) << "the lock goes with its holder";
     for (const auto& entry : fs::directory_iterator(dir))
         EXPECT_NE(entry.path().extension(), ".tmp") << entry.path();
+}
+
+// Issue 34: .mhbench.lock deleted while the first run writes lets no second writer in (the lock is
+// on the directory): the second run and a report into the study are refused in one line naming
+// no holder, and change nothing; the first ends as a clean run.
+TEST(StudyLock, DeletingTheLockFileWhileAStudyRunsLetsNoSecondWriterIn) {
+    const fs::path dir = fresh_lock_dir("deleted");
+    const fs::path logs = fresh_lock_dir("deleted_logs");
+    fs::create_directories(logs);
+    const auto r =
+        run_shell(while_the_first_writes(dir, logs, "rm '" + (dir / ".mhbench.lock").string() + "'"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("run=1\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("report=1\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("first=0\n"), std::string::npos) << r.out;
+    EXPECT_EQ(read_text(logs / "run.err"), "mhbench run: " + dir.string() +
+                                               " is in use by another mhbench process; wait for it or use "
+                                               "another --out\n");
+    EXPECT_EQ(read_text(logs / "report.err"), "mhbench report: " + dir.string() +
+                                                  " is in use by another mhbench process; wait for it, or "
+                                                  "give --out a directory outside the study\n");
+    EXPECT_EQ(read_text(logs / "after"), read_text(logs / "before")) << "the refused ones wrote nothing";
+    EXPECT_EQ(read_text(logs / "after").find(".mhbench.lock"), std::string::npos);
+    EXPECT_TRUE(fs::exists(dir / "runs.csv"));
+    const auto report = run_mhbench("report '" + dir.string() + "' --no-figures");
+    EXPECT_EQ(report.exit_code, 0) << report.err;
 }
 
 TEST(StudyLock, ARunKilledWithSigkillLeavesALockTheNextRunTakesOver) {

@@ -231,6 +231,60 @@ TEST(StudyStore, AFlippedByteInAStoredValueIsComputedAgainWithOneWarning) {
     expect_same_records(dir, reference);
 }
 
+// Issue 34: a study copied by `cp DIR/* NEW/` (which skips .mhbench-study) is reported with one
+// warning when its files are what store.bin renders, refused in one line naming the file and
+// line when one was edited, and restored (marker and files) by the study's command; a study of
+// format 2 (no store.bin) is still read as it is.
+TEST(StudyStore, AStudyWithoutItsMarkerIsCheckedAgainstStoreBinAndItsCommandRestoresIt) {
+    const fs::path original = fresh_store_dir("marked");
+    const fs::path copy = fresh_store_dir("unmarked");
+    const std::string args = run_args("pso random-search", "sphere:dim=2", "--evaluations 400", 3, copy);
+    ASSERT_EQ(run_mhbench(args.substr(0, args.rfind(" --out ")) + " --out " + original.string()).exit_code,
+              0);
+    ASSERT_EQ(run_shell("mkdir '" + copy.string() + "' && cp '" + original.string() + "'/* '" +
+                        copy.string() + "'/")
+                  .exit_code,
+              0);
+    ASSERT_FALSE(fs::exists(copy / ".mhbench-study"));
+
+    const auto intact = run_mhbench("report " + copy.string() + " --no-figures > /dev/null");
+    EXPECT_EQ(intact.exit_code, 0) << intact.err;
+    EXPECT_EQ(intact.err, "mhbench report: warning: " + copy.string() +
+                              ": has no .mhbench-study; its files were checked against store.bin instead "
+                              "(they match, but their number of runs is not checked against study.ini); run "
+                              "the study's command again to restore it\n");
+
+    // Run 4's best f, one digit changed: still a number, no longer the stored one.
+    std::string runs = read_text(copy / "runs.csv");
+    std::size_t at = runs.find(",ok,", runs.find("\n4,")) + 4; // evaluations, iterations, best_f
+    for (int field = 0; field < 2; ++field)
+        at = runs.find(',', at) + 1;
+    runs[at] = runs[at] == '7' ? '8' : '7';
+    std::ofstream(copy / "runs.csv", std::ios::binary | std::ios::trunc) << runs;
+    const auto edited = run_mhbench("report " + copy.string() + " --no-figures > /dev/null");
+    EXPECT_EQ(edited.exit_code, 1);
+    EXPECT_EQ(edited.err, "mhbench report: " + (copy / "runs.csv").string() +
+                              ", line 6: differs from store.bin's record of run 4 (" + copy.string() +
+                              " has no .mhbench-study to vouch for it, so it was checked against store.bin); "
+                              "run the study's command again to render it from store.bin\n");
+
+    const auto again = run_mhbench(args);
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_EQ(runs_computed(again.out), 0) << again.out;
+    EXPECT_EQ(read_text(copy / ".mhbench-study"), read_text(original / ".mhbench-study"));
+    expect_same_records(copy, original);
+    const auto restored = run_mhbench("report " + copy.string() + " --no-figures > /dev/null");
+    EXPECT_EQ(restored.exit_code, 0) << restored.err;
+    EXPECT_EQ(restored.err, "");
+
+    // Format 2: study.ini and runs.csv, no store.bin, no marker.
+    fs::remove(copy / "store.bin");
+    fs::remove(copy / ".mhbench-study");
+    const auto earlier = run_mhbench("report " + copy.string() + " --no-figures > /dev/null");
+    EXPECT_EQ(earlier.exit_code, 0) << earlier.err;
+    EXPECT_EQ(earlier.err, "");
+}
+
 // SIGKILL at the first sign of the phase named by `ready` (a shell test), then the same command.
 void kill_then_complete(const std::string& name, const std::string& extra, const std::string& ready) {
     const fs::path dir = fresh_store_dir(name);

@@ -324,6 +324,51 @@ TEST(StoreIntegrity, ARenderedFileTheDiskLostIsRefusedAndRenderedAgain) {
     }
 }
 
+// Issue 34: without its marker (deleted, or not copied by `cp DIR/* NEW/`), a study's rendered
+// files are read only when they are what store.bin renders; finishing it again restores the
+// marker. Without store.bin too (a study of format 2) they are read as they are.
+TEST(StoreIntegrity, WithoutItsMarkerTheRenderedFilesAreCheckedAgainstTheStore) {
+    const fs::path reference = clean_study(3);
+    const fs::path dir = fresh_store_integrity_dir("unmarked");
+    fs::copy(reference, dir);
+    fs::remove(dir / ".mhbench-study");
+    const StudyData intact = load_study(dir);
+    EXPECT_EQ(intact.runs.size(), 3u);
+    ASSERT_EQ(intact.warnings.size(), 1u);
+    EXPECT_NE(intact.warnings[0].find(": has no .mhbench-study; its files were checked against store.bin"),
+              std::string::npos)
+        << intact.warnings[0];
+    const auto refused = [&](const std::string& name, const std::string& why) {
+        try {
+            (void)load_study(dir);
+            ADD_FAILURE() << name << " was read";
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find(name + why), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("run the study's command again to render it from store.bin"),
+                      std::string::npos)
+                << e.what();
+        }
+        write_bytes(dir / name, bytes_of(reference / name));
+    };
+    for (const char* name : {"curves.csv", "checkpoints.csv", "improvements.csv", "timings.csv"}) {
+        const std::string bytes = bytes_of(reference / name);
+        write_bytes(dir / name, bytes.substr(0, bytes.rfind('\n', bytes.size() - 2) + 1)); // its last line
+        refused(name, ", line ");
+    }
+    fs::remove(dir / "improvements.csv");
+    refused("improvements.csv", ": is missing, but store.bin holds lines of it");
+    EXPECT_EQ(load_study(dir).warnings.size(), 1u);
+
+    open_study(dir, 3).finish(); // the same command restores the marker
+    expect_same_files(dir, reference);
+    EXPECT_TRUE(load_study(dir).warnings.empty());
+    fs::remove(dir / ".mhbench-study");
+    fs::remove(dir / "store.bin");
+    const StudyData earlier = load_study(dir);
+    EXPECT_EQ(earlier.runs.size(), 3u);
+    EXPECT_TRUE(earlier.warnings.empty());
+}
+
 TEST(StoreIntegrity, NoTemporaryFileSurvivesAnError) {
     const fs::path dir = fresh_store_integrity_dir("temporaries");
     StudyWriter w = open_study(dir, 1);

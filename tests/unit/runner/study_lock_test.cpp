@@ -1,5 +1,6 @@
 // runner/execution/study_lock.hpp: one holder at a time, the file names it, a second taker is refused with
-// the holder's pid and touches nothing, and a lock whose holder died (kill -9) is taken over.
+// the holder's pid and touches nothing (even when the file was deleted), and a lock whose holder died
+// (kill -9) is taken over.
 #include <csignal>
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -44,6 +45,22 @@ TEST(StudyLock, ASecondTakerIsRefusedWithTheHoldersPidAndChangesNothing) {
     }
     EXPECT_EQ(test_support::read_text(dir / StudyLock::file_name), before);
     EXPECT_TRUE(fs::exists(dir)) << "a refused taker removes nothing";
+}
+
+// Issue 34: the lock is on the directory, so deleting the file that names the holder lets no
+// second writer in; the refusal then names nobody, and the refused taker writes no file.
+TEST(StudyLock, DeletingTheLockFileLetsNoSecondTakerIn) {
+    const fs::path dir = test_support::fresh_temporary_path("mhb_lock_", "deleted");
+    fs::create_directories(dir);
+    const StudyLock first(dir, "mhbench run");
+    ASSERT_TRUE(fs::remove(dir / StudyLock::file_name));
+    try {
+        const StudyLock second(dir, "mhbench run");
+        ADD_FAILURE() << "two holders";
+    } catch (const StudyInUse& e) {
+        EXPECT_EQ(std::string(e.what()), dir.string() + " is in use by another mhbench process");
+    }
+    EXPECT_FALSE(fs::exists(dir / StudyLock::file_name)) << "a refused taker writes nothing";
 }
 
 TEST(StudyLock, TheLockOfAProcessKilledWithSigkillIsTakenOver) {
