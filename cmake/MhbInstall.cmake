@@ -12,20 +12,6 @@ include(CMakePackageConfigHelpers)
 # The contract's headers (MHBENCH_CONTRACT_HEADERS).
 include(${PROJECT_SOURCE_DIR}/cmake/mhbenchContractHeaders.cmake)
 
-# A fingerprint of the contract's headers, in every plug-in's build settings and in mhbench's own
-# (runner/plugin_api.hpp): a plug-in built against other headers is refused, whatever changed in
-# them. Sizes alone miss a virtual function added, which moves every later entry of the vtable.
-# CMake configures again when one of the headers changes.
-set(mhb_contract_text "")
-foreach(header IN LISTS MHBENCH_CONTRACT_HEADERS)
-    file(READ ${PROJECT_SOURCE_DIR}/${header} mhb_header_text)
-    string(APPEND mhb_contract_text "${header}\n${mhb_header_text}")
-    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${header})
-endforeach()
-string(SHA256 mhb_contract_sha256 "${mhb_contract_text}")
-string(SUBSTRING ${mhb_contract_sha256} 0 16 MHB_PLUGIN_CONTRACT)
-target_compile_definitions(mhb_runner PRIVATE MHB_PLUGIN_CONTRACT="${MHB_PLUGIN_CONTRACT}")
-
 # The contract's sources are compiled each alone, out of the unity batches (cmake/MhbUnityBuild.cmake):
 # the list of what the executable exports to plug-ins (cmake/MhbPluginSymbols.cmake) and its test
 # (tests/plugin_modules/exported_contract_test.sh) tell which source defines a symbol by its object.
@@ -45,7 +31,6 @@ target_include_directories(mhb_api INTERFACE $<BUILD_INTERFACE:${PROJECT_SOURCE_
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/mhbench>)
 target_link_libraries(mhb_api INTERFACE Eigen3::Eigen)
 target_compile_features(mhb_api INTERFACE cxx_std_20)
-target_compile_definitions(mhb_api INTERFACE MHB_PLUGIN_CONTRACT="${MHB_PLUGIN_CONTRACT}")
 
 foreach(header IN LISTS MHBENCH_CONTRACT_HEADERS)
     get_filename_component(folder ${header} DIRECTORY)
@@ -60,5 +45,7 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/mhbenchConfig.cmake.in
     ${PROJECT_BINARY_DIR}/mhbenchConfig.cmake INSTALL_DESTINATION ${mhb_cmake_dir})
 # 0.x: a minor version may change the contract, so find_package(mhbench 0.1) takes 0.1.* only.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/mhbenchConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+# mhbench_add_plugin() and the contract's fingerprint, which every plug-in computes at its build.
 install(FILES ${PROJECT_BINARY_DIR}/mhbenchConfig.cmake ${PROJECT_BINARY_DIR}/mhbenchConfigVersion.cmake
-    ${PROJECT_SOURCE_DIR}/cmake/mhbenchPlugin.cmake DESTINATION ${mhb_cmake_dir})
+    ${PROJECT_SOURCE_DIR}/cmake/mhbenchPlugin.cmake ${PROJECT_SOURCE_DIR}/cmake/mhbenchContract.cmake
+    ${PROJECT_SOURCE_DIR}/cmake/mhbenchContractHeaders.cmake DESTINATION ${mhb_cmake_dir})
