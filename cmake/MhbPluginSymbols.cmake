@@ -54,6 +54,7 @@ endfunction()
 # problems/core/rng.hpp), in OUT; empty when the object is not a contract source's.
 function(mhb_header_of_object object out)
     set(${out} "" PARENT_SCOPE)
+    string(REPLACE "/./" "/" object "${object}") # Ninja's spelling: mhb_problems.dir/./core/rng.cpp.o
     foreach(header IN LISTS MHBENCH_CONTRACT_HEADERS)
         string(REGEX REPLACE "^[a-z]+/(.*)\\.hpp$" "\\1" stem ${header})
         string(REPLACE "." "\\." stem_pattern ${stem})
