@@ -5,45 +5,17 @@
 #   bin/mhbench                    the executable the modules are loaded into
 # mhbench::mhbench is headers only: a plug-in's calls into mhbench (Objective::evaluate, Rng,
 # parameters) are resolved from the executable when it loads the module, so that the one copy of
-# each function the runs use is mhbench's own (runner/plugin_symbols.list says which).
+# each function the runs use is mhbench's own (cmake/MhbPluginSymbols.cmake lists them).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-# The closure of runner/plugin_api.hpp's includes, nothing more (tests/plugin_example checks it by
-# building against the installed copy).
-set(MHB_PUBLIC_HEADERS
-    algorithms/algorithm_registry.hpp
-    algorithms/optimizer.hpp
-    algorithms/sampling.hpp
-    problems/core/parameters.hpp
-    problems/core/registry.hpp
-    problems/core/rng.hpp
-    problems/core/spec.hpp
-    problems/core/text_excerpt.hpp
-    problems/objective.hpp
-    problems/problem.hpp
-    problems/problem_registry.hpp
-    problems/trace_recorder.hpp
-    runner/plugin_api.hpp)
-
-# A fingerprint of the contract's headers, in every plug-in's build settings and in mhbench's own
-# (runner/plugin_api.hpp): a plug-in built against other headers is refused, whatever changed in
-# them. Sizes alone miss a virtual function added, which moves every later entry of the vtable.
-# CMake configures again when one of the headers changes.
-set(mhb_contract_text "")
-foreach(header IN LISTS MHB_PUBLIC_HEADERS)
-    file(READ ${PROJECT_SOURCE_DIR}/${header} mhb_header_text)
-    string(APPEND mhb_contract_text "${header}\n${mhb_header_text}")
-    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${header})
-endforeach()
-string(SHA256 mhb_contract_sha256 "${mhb_contract_text}")
-string(SUBSTRING ${mhb_contract_sha256} 0 16 MHB_PLUGIN_CONTRACT)
-target_compile_definitions(mhb_runner PRIVATE MHB_PLUGIN_CONTRACT="${MHB_PLUGIN_CONTRACT}")
+# The contract's headers (MHBENCH_CONTRACT_HEADERS).
+include(${PROJECT_SOURCE_DIR}/cmake/mhbenchContractHeaders.cmake)
 
 # The contract's sources are compiled each alone, out of the unity batches (cmake/MhbUnityBuild.cmake):
-# the test that every function of the contract is exported to plug-ins
-# (tests/plugin_modules/exported_contract_test.sh) tells which source defines a symbol by its object.
-foreach(header IN LISTS MHB_PUBLIC_HEADERS)
+# the list of what the executable exports to plug-ins (cmake/MhbPluginSymbols.cmake) and its test
+# (tests/plugin_modules/exported_contract_test.sh) tell which source defines a symbol by its object.
+foreach(header IN LISTS MHBENCH_CONTRACT_HEADERS)
     string(REGEX REPLACE "\\.hpp$" ".cpp" source ${header})
     string(REGEX MATCH "^[a-z]+" folder ${header})
     if(EXISTS ${PROJECT_SOURCE_DIR}/${source})
@@ -59,9 +31,8 @@ target_include_directories(mhb_api INTERFACE $<BUILD_INTERFACE:${PROJECT_SOURCE_
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/mhbench>)
 target_link_libraries(mhb_api INTERFACE Eigen3::Eigen)
 target_compile_features(mhb_api INTERFACE cxx_std_20)
-target_compile_definitions(mhb_api INTERFACE MHB_PLUGIN_CONTRACT="${MHB_PLUGIN_CONTRACT}")
 
-foreach(header IN LISTS MHB_PUBLIC_HEADERS)
+foreach(header IN LISTS MHBENCH_CONTRACT_HEADERS)
     get_filename_component(folder ${header} DIRECTORY)
     install(FILES ${PROJECT_SOURCE_DIR}/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/mhbench/${folder})
 endforeach()
@@ -74,5 +45,7 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/mhbenchConfig.cmake.in
     ${PROJECT_BINARY_DIR}/mhbenchConfig.cmake INSTALL_DESTINATION ${mhb_cmake_dir})
 # 0.x: a minor version may change the contract, so find_package(mhbench 0.1) takes 0.1.* only.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/mhbenchConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+# mhbench_add_plugin() and the contract's fingerprint, which every plug-in computes at its build.
 install(FILES ${PROJECT_BINARY_DIR}/mhbenchConfig.cmake ${PROJECT_BINARY_DIR}/mhbenchConfigVersion.cmake
-    ${PROJECT_SOURCE_DIR}/cmake/mhbenchPlugin.cmake DESTINATION ${mhb_cmake_dir})
+    ${PROJECT_SOURCE_DIR}/cmake/mhbenchPlugin.cmake ${PROJECT_SOURCE_DIR}/cmake/mhbenchContract.cmake
+    ${PROJECT_SOURCE_DIR}/cmake/mhbenchContractHeaders.cmake DESTINATION ${mhb_cmake_dir})

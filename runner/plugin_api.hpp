@@ -67,8 +67,9 @@ inline std::string plugin_build_settings() {
     s += setting("eigen_max_align_bytes", std::to_string(EIGEN_MAX_ALIGN_BYTES));
     s += setting("eigen_max_static_align_bytes", std::to_string(EIGEN_MAX_STATIC_ALIGN_BYTES));
     s += setting("eigen_index_bytes", std::to_string(sizeof(Eigen::Index)));
-    // The contract's headers themselves (cmake/MhbInstall.cmake): another mhbench's, even of the
-    // same version, differ here. "none" in a build that did not go through mhbench's CMake.
+    // The contract's headers themselves, fingerprinted at each side's build from the files its
+    // compiler resolves (mhbench_add_plugin, cmake/mhbenchContract.cmake): another mhbench's, or a
+    // changed copy, differ here. "none" in a build that did not go through mhbench's CMake.
 #if defined(MHB_PLUGIN_CONTRACT)
     s += setting("contract", MHB_PLUGIN_CONTRACT);
 #else

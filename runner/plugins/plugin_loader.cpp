@@ -6,6 +6,7 @@
 
 #include "problems/core/sha256.hpp"
 #include "runner/plugin_api.hpp"
+#include "runner/plugins/load_failure.hpp"
 
 namespace mhb {
 namespace {
@@ -86,8 +87,8 @@ LoadedPlugin load_plugin(const std::filesystem::path& given) {
     void* handle = ::dlopen(plugin.path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (handle == nullptr) {
         const char* why = ::dlerror();
-        throw PluginError("plugin " + plugin.path + ": cannot be loaded (" +
-                          (why != nullptr ? why : "unknown") + ")");
+        throw PluginError("plugin " + plugin.path + ": cannot be loaded" +
+                          load_failure(why != nullptr ? why : "unknown"));
     }
     using EntryPoint = const PluginInfo* (*)();
     void* symbol = ::dlsym(handle, MHBENCH_PLUGIN_ENTRY_POINT);

@@ -1,8 +1,8 @@
 // Plug-in modules (`--plugin`, runner/plugins/plugin_loader.hpp) by the CLI: study.ini, list and eval know
 // the plug-in; and every refusal is one line and a non-zero exit: a missing file, a file that is
 // not a module, a module without the entry point, another plug-in ABI, another Eigen alignment, a
-// name already taken, and a plug-in rebuilt under a stored study. (The example plug-in built
-// against the installed package: extension_example_test.cpp.)
+// name already taken, a call mhbench does not export, and a plug-in rebuilt under a stored study. (The
+// example plug-in built against the installed package: extension_example_test.cpp.)
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -110,6 +110,10 @@ TEST(PluginCli, EachUnusableModuleIsRefusedInOneLine) {
          "built with eigen_max_align_bytes=64, this mhbench has eigen_max_align_bytes="},
         {test_plugins + "/test_plugin_clash.so",
          "problem 'sphere' is already built into mhbench; rename it in the plug-in"},
+        {test_plugins + "/test_plugin_unexported.so",
+         ": cannot be loaded: undefined symbol mhb::sha256_hex[abi:cxx11](std::basic_string_view<char, "
+         "std::char_traits<char> >) (a symbol mhbench does not export to plug-ins: build the plug-in "
+         "against this mhbench's installed package"},
     };
     for (const auto& [module, expected] : cases)
         expect_refused(run_mhbench("run --plugin " + shell_quoted(module) + study), expected);

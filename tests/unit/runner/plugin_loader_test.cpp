@@ -1,11 +1,12 @@
 // The plug-in loader's checks (runner/plugins/plugin_loader.hpp): the build settings of a plug-in and of
 // mhbench are compared setting by setting, naming the first that differs; a missing module is one
-// line. The refusals of real modules are in tests/integration/plugin_test.cpp, module hashes in
-// run identities in run_identity_versions_test.cpp.
+// line; an undefined symbol is named demangled. The refusals of real modules are in
+// tests/integration/plugin_test.cpp, module hashes in run identities in run_identity_versions_test.cpp.
 #include <gtest/gtest.h>
 #include <string>
 
 #include "runner/plugin_api.hpp"
+#include "runner/plugins/load_failure.hpp"
 #include "runner/plugins/plugin_loader.hpp"
 
 namespace mhb {
@@ -21,6 +22,17 @@ TEST(PluginBuildSettings, TheFirstDifferingSettingIsNamedWithBothValues) {
               "cxx11_abi=(unset), this mhbench has cxx11_abi=1");
     EXPECT_EQ(build_settings_difference("compiler=gcc-12;glibcxx_debug=1;", "compiler=gcc-12;"),
               "glibcxx_debug=1, this mhbench has glibcxx_debug=(unset)");
+}
+
+TEST(PluginLoader, AnUndefinedSymbolIsNamedDemangledWithWhatToDo) {
+    EXPECT_EQ(load_failure("/x/mine.so: undefined symbol: _ZTVN3mhb3FooE"),
+              ": undefined symbol vtable for mhb::Foo (a symbol mhbench does not export to plug-ins: build "
+              "the plug-in against this mhbench's installed package, and call only what its headers "
+              "declare)");
+    // A versioned C symbol stays as it is; any other reason is given whole.
+    EXPECT_EQ(load_failure("/x/mine.so: undefined symbol: frobnicate, version LIB_1").substr(0, 30),
+              ": undefined symbol frobnicate ");
+    EXPECT_EQ(load_failure("/x/mine.so: invalid ELF header"), " (/x/mine.so: invalid ELF header)");
 }
 
 TEST(PluginLoader, AMissingFileIsOneLineNamingIt) {
