@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "problems/core/executable_path.hpp"
+#include "problems/external/command.hpp"
 
 namespace mhb::external {
 namespace {
@@ -92,10 +93,10 @@ std::string resolve_program(const std::string& program) {
 ChildLink::ChildLink(const std::vector<std::string>& argv) {
     if (argv.empty())
         throw ChildFault("the command is empty", {});
-    program_ = argv.front();
-    const std::string path = resolve_program(program_);
+    program_ = program_name(argv);
+    const std::string path = resolve_program(argv.front());
     if (path.empty())
-        throw ChildFault(program_ + ": not found in PATH", {});
+        throw ChildFault(argv.front() + ": not found in PATH", {});
     std::vector<std::string> words = argv;
     std::vector<char*> pointers;
     for (auto& w : words)

@@ -55,6 +55,7 @@ public:
     [[nodiscard]] pid_t pid() const { return pid_; }
     // Its last stderr lines, joined by " | " (empty if it wrote none).
     [[nodiscard]] std::string stderr_tail();
+    // What messages call it: the script, not its interpreter (command.hpp, program_name).
     [[nodiscard]] const std::string& program() const { return program_; }
 
 private:

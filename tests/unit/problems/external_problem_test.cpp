@@ -51,6 +51,14 @@ TEST(ExternalCommand, SplitsWordsKeepsQuotedBlanksAndOneSpecPerQuotedCommand) {
               (std::map<std::string, std::string>{{"a", "1"}, {"b", "x=y"}}));
 }
 
+TEST(ExternalCommand, MessagesNameTheScriptNotItsInterpreter) {
+    const std::string script = std::string(MHB_SOURCE_DIR) + "/scripts/external/sphere_problem.py";
+    EXPECT_EQ(external::program_name({"/usr/bin/python3", script, "dim=3"}), script);
+    EXPECT_EQ(external::program_name({"python3", "-u", script}), script);
+    EXPECT_EQ(external::program_name({"/usr/bin/python3", "-c", "print(1)"}), "/usr/bin/python3");
+    EXPECT_EQ(external::program_name({"mymodel", "--fast"}), "mymodel");
+}
+
 TEST(ExternalProblem, DescribesItselfAndEvaluatesExactly) {
     const auto problem = external(reference_client("sphere_problem.py"), "params=dim=3");
     EXPECT_EQ(problem->name(), "external");
