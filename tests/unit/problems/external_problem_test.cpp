@@ -236,7 +236,9 @@ INSTANTIATE_TEST_SUITE_P(
     Faults, ExternalProblemFault,
     testing::Values(Fault{"crash", "exited with status 3; its stderr: faulty: segmentation"},
                     Fault{"hang", "did not answer within"},
-                    Fault{"garbage", "not a JSON object: 'Warning: model converged"},
+                    Fault{"garbage", "faulty_problem.py: wrote a line that is not a JSON object ('Warning: "
+                                     "model converged slowly'): stdout carries the protocol; print "
+                                     "your own output to stderr"},
                     Fault{"nan", "returned NaN for point 1 of 2"}, Fault{"count", "f has 1 numbers, not 2"}),
     [](const auto& test) { return test.param.mode; });
 
