@@ -3,6 +3,7 @@
 // own runs with one line each while the study's other runs finish; a changed script is refused
 // on extension like a changed data file; a program that exits before reading all it was sent is
 // a failed run or the end of a complete one, never a SIGPIPE that ends mhbench without a word.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -35,6 +36,7 @@ std::string python(const std::string& script, const std::string& arguments = "")
 const std::string es = std::string(MHB_SOURCE_DIR) + "/scripts/external/one_plus_one_es.py";
 const std::string sphere = std::string(MHB_SOURCE_DIR) + "/scripts/external/sphere_problem.py";
 const std::string faulty = std::string(MHB_TEST_DATA_DIR) + "/external/faulty_problem.py";
+const std::string pmsm = std::string(MHB_SOURCE_DIR) + "/scripts/external/pmsm_steady_problem.py";
 const std::string early_problem = std::string(MHB_TEST_DATA_DIR) + "/external/early_exit_problem.py";
 const std::string early_optimizer = std::string(MHB_TEST_DATA_DIR) + "/external/early_exit_optimizer.py";
 
@@ -131,6 +133,52 @@ TEST(ExternalStudy, PluginCheckOfAnOptimiserThatExitsEarlyPrintsItsLines) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("pass  budget"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("verdict: pass"), std::string::npos) << r.out;
+}
+
+// The cells of a CSV line, quoted fields ("..." with "" for a quote) unquoted.
+std::vector<std::string> cells_of(const std::string& line) {
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+            cells.back() += line[++i];
+        else if (c == '"')
+            quoted = !quoted;
+        else if (c == ',' && !quoted)
+            cells.emplace_back();
+        else
+            cells.back() += c;
+    }
+    return cells;
+}
+
+// The Python PMSM model reads the motor's parameters from the dataset's metadata and declares them
+// ("truth"): runs.csv gets the true values and the estimates' errors, as for the built-in model.
+TEST(ExternalStudy, AProblemThatDeclaresItsTruthFillsTheTrueAndErrorColumns) {
+    const fs::path dir = fresh("external_truth");
+    const std::string data = std::string(MHB_TEST_DATA_DIR) + "/pmsm/pmsm_public_2200rpm_2.5Nm_clean_ss.csv";
+    const auto r = run_mhbench("run --algorithms tlbo --problem " +
+                               spec("external", python(pmsm), "params=data=" + data) +
+                               " --runs 1 --evaluations 2000 --seed 5 --no-report --out " + dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto rows = lines_of(read_text(dir / "runs.csv"));
+    ASSERT_EQ(rows.size(), 2U);
+    const auto header = cells_of(rows[0]);
+    const auto row = cells_of(rows[1]);
+    const auto at = [&](const std::string& column) {
+        const auto found = std::find(header.begin(), header.end(), column);
+        return found == header.end() || static_cast<std::size_t>(found - header.begin()) >= row.size()
+                   ? std::string("(no column)")
+                   : row[static_cast<std::size_t>(found - header.begin())];
+    };
+    const std::pair<const char*, const char*> truths[] = {
+        {"Rs", "0.33"}, {"Ld", "0.00324"}, {"Lq", "0.00324"}, {"psi", "0.0776"}};
+    for (const auto& [name, truth] : truths) {
+        EXPECT_EQ(at(std::string(name) + "_true"), truth) << rows[0] << "\n" << rows[1];
+        const std::string error = at(std::string(name) + "_err_pct");
+        EXPECT_FALSE(error.empty() || error == "(no column)") << name << ": " << rows[1];
+    }
 }
 
 TEST(ExternalStudy, AChangedScriptIsRefusedOnExtension) {
