@@ -128,8 +128,9 @@ TEST(ExternalStudy, AnOptimiserThatExitsOnceItsBudgetIsSpentCompletesItsRuns) {
 }
 
 TEST(ExternalStudy, PluginCheckOfAnOptimiserThatExitsEarlyPrintsItsLines) {
-    const auto r = run_mhbench("plugin-check --problem sphere:dim=100 --algorithm " +
-                               spec("external", python(early_optimizer, "partial 100 early-check-marker")));
+    const auto r =
+        run_mhbench("plugin-check --problem sphere:dim=100 --runs 2 --evaluations 300 --algorithm " +
+                    spec("external", python(early_optimizer, "partial 100 early-check-marker")));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("pass  budget"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("verdict: pass"), std::string::npos) << r.out;
