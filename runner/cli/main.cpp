@@ -62,8 +62,8 @@ void print_usage(std::ostream& out) {
 // that ends mhbench without a word and loses its stdout: an external program that exits before
 // reading all it was sent (problems/external/child_link.cpp), or a reader of mhbench's own stdout
 // that stops early (`mhbench list | head -1`). Set first, before any thread exists; every child
-// gets the default back before exec (child_link.cpp, results/report/child_process.cpp), since an
-// ignored signal stays ignored across exec.
+// gets the default back before exec (child_link.cpp, results/report/child_process.cpp, xdg-open in
+// report_command.cpp), since an ignored signal stays ignored across exec.
 void ignore_sigpipe() {
     struct sigaction ignore {};
     ignore.sa_handler = SIG_IGN;
@@ -78,7 +78,7 @@ bool stdout_reader_gone() {
 }
 
 // The command's exit status, or a failure if its stdout could not be written: quietly when the
-// reader has gone (what the user wanted, they had), with a line otherwise (a full disk).
+// reader has gone (it took what it wanted), with a line otherwise (a full disk).
 int with_stdout_checked(int status) {
     std::cout.flush();
     const bool failed = !std::cout || std::fflush(stdout) != 0;
