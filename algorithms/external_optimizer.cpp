@@ -12,7 +12,7 @@
 //   child   -> {"type":"iteration"}                   optional: the end of an iteration (no answer)
 //   child   -> {"type":"done"}                        optional: it stops early (converged)
 //   mhbench -> {"type":"stop"}                        the budget is spent: the child exits
-// A child that exits before it is told to stop, hangs past `timeout`, or writes something else
+// A child that exits before its budget is spent, hangs past `timeout`, or writes something else
 // is killed with its process group and the run is a failed record carrying its last stderr
 // lines: an optimiser's state cannot be restarted, so there is no retry here.
 // Evaluations per iteration: what the child asks for.
@@ -148,10 +148,18 @@ private:
         points.resize(done);
         f.resize(done);
         const std::int64_t remaining = objective.remaining_evaluations();
-        link.send(R"({"type":"values","f":)" + external::json_array(f) + R"(,"x":)" +
-                  external::json_points(points) + R"(,"evaluations":)" +
-                  std::to_string(objective.evaluations()) + R"(,"remaining":)" +
-                  (objective.budget().max_evaluations ? std::to_string(remaining) : "null") + "}");
+        try {
+            link.send(R"({"type":"values","f":)" + external::json_array(f) + R"(,"x":)" +
+                      external::json_points(points) + R"(,"evaluations":)" +
+                      std::to_string(objective.evaluations()) + R"(,"remaining":)" +
+                      (objective.budget().max_evaluations ? std::to_string(remaining) : "null") + "}");
+        } catch (const ChildFault&) {
+            // Its last answer, as for "stop": once the budget is spent the run is complete, and a
+            // program that exits without reading all of that answer (it had what it needed) ended
+            // nothing early.
+            if (!objective.exhausted())
+                throw;
+        }
     }
 
     void stop(ChildLink& link) const {

@@ -4,6 +4,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
@@ -11,6 +12,7 @@
 #include <unistd.h>
 
 #include "problems/core/executable_path.hpp"
+#include "problems/external/command.hpp"
 
 namespace mhb::external {
 namespace {
@@ -82,6 +84,42 @@ void close_fd(int& fd) {
     ::_exit(0);
 }
 
+// SIGPIPE blocked in this thread while it writes to a child, and the one that a write to a child
+// that has exited raises taken back before the mask is restored (libpq's pq_block_sigpipe and
+// pq_reset_sigpipe): the write fails with EPIPE, which send() turns into a ChildFault, whatever the
+// process does with SIGPIPE. mhbench ignores it (runner/cli/main.cpp), but a test or another host
+// of this library may not, and its default ends the whole process without a word.
+class SigpipeBlock {
+public:
+    SigpipeBlock() {
+        sigemptyset(&pipe_);
+        sigaddset(&pipe_, SIGPIPE);
+        ::pthread_sigmask(SIG_BLOCK, &pipe_, &previous_);
+        sigset_t pending;
+        sigemptyset(&pending);
+        // One pending already is not ours to take.
+        was_pending_ = ::sigpending(&pending) == 0 && sigismember(&pending, SIGPIPE) == 1;
+    }
+    ~SigpipeBlock() { ::pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+    SigpipeBlock(const SigpipeBlock&) = delete;
+    SigpipeBlock& operator=(const SigpipeBlock&) = delete;
+
+    // After a write failed with EPIPE: the SIGPIPE it raised (pending while blocked, even when
+    // ignored on Linux) is consumed, not delivered when the mask is restored.
+    void take_back() const {
+        if (was_pending_)
+            return;
+        const timespec now{0, 0};
+        while (::sigtimedwait(&pipe_, nullptr, &now) < 0 && errno == EINTR) {
+        }
+    }
+
+private:
+    sigset_t pipe_{};
+    sigset_t previous_{};
+    bool was_pending_ = false;
+};
+
 } // namespace
 
 // Resolved before fork: getenv is not async-signal-safe.
@@ -92,10 +130,10 @@ std::string resolve_program(const std::string& program) {
 ChildLink::ChildLink(const std::vector<std::string>& argv) {
     if (argv.empty())
         throw ChildFault("the command is empty", {});
-    program_ = argv.front();
-    const std::string path = resolve_program(program_);
+    program_ = program_name(argv);
+    const std::string path = resolve_program(argv.front());
     if (path.empty())
-        throw ChildFault(program_ + ": not found in PATH", {});
+        throw ChildFault(argv.front() + ": not found in PATH", {});
     std::vector<std::string> words = argv;
     std::vector<char*> pointers;
     for (auto& w : words)
@@ -157,7 +195,9 @@ ChildLink::ChildLink(const std::vector<std::string>& argv) {
         else
             ::close(life[1]);
     }
-    // Writing to a child that has exited must be an error here, not a SIGPIPE that ends mhbench.
+    // So that a child that does not read is waited for in poll, with its stderr drained, not in a
+    // write. (It does not keep a write to a child that has exited from raising SIGPIPE: see
+    // SigpipeBlock for that.)
     ::fcntl(in_, F_SETFL, ::fcntl(in_, F_GETFL) | O_NONBLOCK);
 }
 
@@ -213,10 +253,11 @@ void ChildLink::finish(std::chrono::duration<double> grace) {
 void ChildLink::send(const std::string& line) {
     std::string text = line;
     text += '\n';
+    const SigpipeBlock block;
     std::size_t done = 0;
     while (done < text.size()) {
         if (in_ < 0)
-            throw ChildFault(program_ + " " + exit_description(), stderr_tail());
+            throw ChildFault(program_ + " " + exit_description("closed its output"), stderr_tail());
         const ssize_t wrote = ::write(in_, text.data() + done, text.size() - done);
         if (wrote > 0) {
             done += static_cast<std::size_t>(wrote);
@@ -232,7 +273,15 @@ void ChildLink::send(const std::string& line) {
                 drain_stderr(false);
             continue;
         }
-        throw ChildFault(program_ + " " + exit_description(), stderr_tail());
+        if (wrote < 0 && errno == EPIPE) {
+            // No reader left: it exited (or closed its stdin) before reading all it was sent.
+            block.take_back();
+            throw ChildFault(program_ + " " + exit_description("closed its stdin") +
+                                 " before reading all it was sent",
+                             stderr_tail());
+        }
+        throw ChildFault(program_ + ": cannot write to its stdin (" + std::strerror(errno) + ")",
+                         stderr_tail());
     }
 }
 
@@ -250,7 +299,7 @@ std::string ChildLink::receive(std::chrono::duration<double> timeout) {
         if (out_buffer_.size() > max_line)
             throw ChildFault(program_ + " wrote a line longer than 64 MiB", stderr_tail());
         if (out_ < 0)
-            throw ChildFault(program_ + " " + exit_description(), stderr_tail());
+            throw ChildFault(program_ + " " + exit_description("closed its output"), stderr_tail());
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
             deadline - std::chrono::steady_clock::now());
         if (left.count() <= 0)
@@ -327,12 +376,12 @@ std::string ChildLink::stderr_tail() {
     return tail;
 }
 
-std::string ChildLink::exit_description() {
+std::string ChildLink::exit_description(const char* if_running) {
     // It closed its pipes: give it a moment to exit so that the status can be told.
     for (int i = 0; i < 100 && !exited(); ++i)
         ::usleep(1000);
     if (!exited_)
-        return "closed its output";
+        return if_running;
     drain_stderr(true);
     if (exit_code_ == CLD_EXITED)
         return "exited with status " + std::to_string(exit_status_);

@@ -41,7 +41,8 @@ public:
     ChildLink(const ChildLink&) = delete;
     ChildLink& operator=(const ChildLink&) = delete;
 
-    // Writes `line` and a newline. ChildFault if the child has closed its stdin (exited).
+    // Writes `line` and a newline. ChildFault if the child has closed its stdin (exited), never a
+    // SIGPIPE, whatever the process's disposition of it.
     void send(const std::string& line);
     // The next line of its stdout, waiting at most `timeout`. ChildFault when the child exits
     // (with its status), the deadline passes, or the line is longer than a limit.
@@ -55,12 +56,15 @@ public:
     [[nodiscard]] pid_t pid() const { return pid_; }
     // Its last stderr lines, joined by " | " (empty if it wrote none).
     [[nodiscard]] std::string stderr_tail();
+    // What messages call it: the script, not its interpreter (command.hpp, program_name).
     [[nodiscard]] const std::string& program() const { return program_; }
 
 private:
     void drain_stderr(bool wait_for_end);
     void add_stderr(const char* data, std::size_t size);
-    [[nodiscard]] std::string exit_description();
+    // "exited with status 3", "was killed by signal 9 (Killed)", or `if_running` if it has not
+    // exited (within a short wait).
+    [[nodiscard]] std::string exit_description(const char* if_running);
     [[nodiscard]] bool exited();
 
     std::string program_;

@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "problems/core/executable_path.hpp"
 #include "problems/core/sha256.hpp"
-#include "problems/external/child_link.hpp"
 
 namespace mhb::external {
 
@@ -47,11 +47,15 @@ std::vector<std::string> split_command(const std::string& whole) {
     return words;
 }
 
-std::vector<std::string> code_files(const std::vector<std::string>& words) {
-    const auto is_file = [](const std::string& word) {
-        std::error_code error;
-        return std::filesystem::is_regular_file(word, error);
-    };
+namespace {
+
+bool is_file(const std::string& word) {
+    std::error_code error;
+    return std::filesystem::is_regular_file(word, error);
+}
+
+// The words, as written, that name an existing file, without an installed interpreter in front.
+std::vector<std::string> code_words(const std::vector<std::string>& words) {
     const std::string& first = words.front();
     const bool installed =
         first.find('/') == std::string::npos || first.starts_with("/usr/") || first.starts_with("/bin/");
@@ -59,13 +63,27 @@ std::vector<std::string> code_files(const std::vector<std::string>& words) {
     for (std::size_t i = installed ? 1 : 0; i < words.size(); ++i)
         if (is_file(words[i]))
             files.push_back(words[i]);
+    return files;
+}
+
+} // namespace
+
+std::vector<std::string> code_files(const std::vector<std::string>& words) {
+    std::vector<std::string> files = code_words(words);
     if (files.empty()) {
         // `cmd=mymodel` found in PATH: its executable is all there is.
-        const std::string path = resolve_program(first);
+        const std::string path = find_executable(words.front()).value_or(std::string());
         if (!path.empty() && is_file(path))
             files.push_back(path);
     }
     return files;
+}
+
+std::string program_name(const std::vector<std::string>& words) {
+    if (words.empty())
+        return {};
+    const std::vector<std::string> code = code_words(words);
+    return code.empty() ? words.front() : code.front();
 }
 
 std::map<std::string, std::string> split_params(const std::string& owner, const std::string& text) {

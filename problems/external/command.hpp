@@ -24,6 +24,11 @@ std::vector<std::string> split_command(const std::string& text);
 // other word names a file, the first word itself (resolved through PATH).
 std::vector<std::string> code_files(const std::vector<std::string>& words);
 
+// What messages call the program: the first of its code words as written (`scripts/x.py`, not
+// `/usr/bin/python3`: a user knows their script, not the interpreter that runs it), else the
+// first word.
+std::string program_name(const std::vector<std::string>& words);
+
 // `a=1;b=two` (the `params=` pass-through) as a map; std::invalid_argument naming `owner` for
 // an item without '='.
 std::map<std::string, std::string> split_params(const std::string& owner, const std::string& text);

@@ -64,6 +64,14 @@ public:
     const Box& bounds() const override { return description_.bounds; }
     std::optional<KnownOptimum> known_optimum() const override { return description_.optimum; }
     std::vector<std::string> parameter_names() const override { return description_.names; }
+    std::optional<Eigen::VectorXd> true_parameters() const override { return description_.truth; }
+    std::vector<std::string> warnings() const override {
+        // Allowed: a study of a box that misses the truth is a fair question, but worth saying.
+        if (!description_.truth || description_.bounds.contains(*description_.truth))
+            return {};
+        return {"the truth it declares lies outside its box: no run can reach an error of 0 % "
+                "(P_err_pct)"};
+    }
     bool batch_evaluation() const override { return true; }
     std::string identity_facts() const override { return identity_; }
 

@@ -1,8 +1,10 @@
 // The first exchange with an external program, for problems and optimisers alike:
 //   mhbench -> {"type":"describe","protocol":1,"role":"problem"|"optimizer","parameters":{...}}
 //   child   -> {"type":"description","version":"...", ...}
-// A problem's description also gives its dimension, bounds and, optionally, coordinate names and
-// a known optimum; an optimiser's gives only its version.
+// A problem's description also gives its dimension, bounds and, optionally, coordinate names, a
+// known optimum and the true parameters (`truth`, named coordinates only); an optimiser's gives
+// only its version. Optional fields added later leave protocol_version as it is: a program that
+// does not know them sends none, and an older mhbench ignores the fields it does not know.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,6 +27,7 @@ struct Description {
     Box bounds;
     std::vector<std::string> names;
     std::optional<KnownOptimum> optimum;
+    std::optional<Eigen::VectorXd> truth; // finite, one per coordinate; may lie outside the box
 };
 
 // Sends `describe` and reads the description; ChildFault for a child that exits, times out or

@@ -81,7 +81,9 @@ nlohmann::json parse_message(std::string_view line) {
         text.replace(at, 6, "\"-inf\"");
     nlohmann::json message = nlohmann::json::parse(text, nullptr, false);
     if (message.is_discarded() || !message.is_object())
-        throw std::runtime_error("not a JSON object: " + quoted_excerpt(line));
+        // Most often a print meant for a person (a debug line, a warning of the model's library).
+        throw std::runtime_error("wrote a line that is not a JSON object (" + quoted_excerpt(line) +
+                                 "): stdout carries the protocol; print your own output to stderr");
     return message;
 }
 

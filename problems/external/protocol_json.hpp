@@ -25,7 +25,8 @@ std::string json_points(std::span<const Eigen::VectorXd> points);
 // `text` as a JSON string, escaped.
 std::string json_string(std::string_view text);
 
-// Parses one line into a JSON object; std::runtime_error saying "not a JSON object: <excerpt>".
+// Parses one line into a JSON object; std::runtime_error saying "wrote a line that is not a JSON
+// object ('<excerpt>'): stdout carries the protocol; ..." (after the program's name and ": ").
 nlohmann::json parse_message(std::string_view line);
 // The message's "type" (a string), or std::runtime_error.
 std::string message_type(const nlohmann::json& message);

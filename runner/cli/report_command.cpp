@@ -2,6 +2,7 @@
 // from its directory alone. Thin: parses the command line, loads the study, calls build_report.
 #include <algorithm>
 #include <boost/program_options.hpp>
+#include <csignal>
 #include <cstdlib>
 #include <fcntl.h>
 #include <filesystem>
@@ -63,6 +64,11 @@ void open_in_browser(const std::filesystem::path& page) {
                 ::dup2(null, 1);
                 ::dup2(null, 2);
             }
+            // mhbench ignores SIGPIPE (main.cpp), and an ignored signal stays ignored across exec.
+            struct sigaction by_default {};
+            by_default.sa_handler = SIG_DFL;
+            sigemptyset(&by_default.sa_mask);
+            ::sigaction(SIGPIPE, &by_default, nullptr);
             ::execl(opener.c_str(), "xdg-open", url.c_str(), static_cast<char*>(nullptr));
         }
         ::_exit(0);

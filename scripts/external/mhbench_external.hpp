@@ -86,6 +86,8 @@ struct ProblemDescription {
     Point lower, upper;
     std::vector<std::string> names;  // optional
     std::optional<double> optimum_f; // optional
+    Point truth{}; // optional: the parameters that generated the data (needs names); {} keeps
+                   // aggregates written before it was added free of -Wmissing-field-initializers
 };
 
 // Serves a problem until mhbench closes our stdin: `describe` from the describe message's
@@ -105,6 +107,8 @@ inline int serve_problem(const std::string& version,
                 line += R"(,"names":)" + nlohmann::json(d.names).dump();
             if (d.optimum_f)
                 line += R"(,"optimum":{"f":)" + number(*d.optimum_f) + "}";
+            if (!d.truth.empty())
+                line += R"(,"truth":)" + array(d.truth);
             send(line + "}");
         } else if (type == "eval") {
             Point f;

@@ -6,7 +6,10 @@ built-in `pmsm:data=FILE` (model=steady), written out so that a drive engineer c
 Parameters (`params=data=drive.csv;settle=0.01`): data = a CSV of t,ud,uq,id,iq,omega[,injected]
 ('#' comment lines allowed), settle = seconds left out after a switch of the injection state
 (0.01), id_threshold = |id| (A) that marks the injected state without an 'injected' column (1),
-w1..w4 = the residuals' weights (0.25 each). The search box is the paper's.
+w1..w4 = the residuals' weights (0.25 each). The search box is the paper's. A dataset whose
+metadata lines give the motor's parameters (`# Rs=0.33`, `# Ld=...`, `# Lq=...`, `# psi=...`, as
+`mhbench simulate` writes them) makes them the description's "truth", so that runs.csv reports the
+errors of the estimates (Rs_err_pct, ...) as for the built-in.
 
 theta = (Rs, Ld, Lq, psi);  r_d = ud - (Rs id - Lq omega iq),  r_q = uq - (Rs iq + Ld omega id + psi omega)
 f = sum over the last n settled samples of each state of w1 r_d^2 + w2 r_q^2 (id = 0) and
@@ -19,6 +22,25 @@ import sys
 VERSION = "pmsm-steady-py-1"
 LOWER = [0.0, 0.0, 0.0, 0.0]
 UPPER = [0.5, 0.01, 0.01, 0.1]
+
+
+NAMES = ["Rs", "Ld", "Lq", "psi"]
+
+
+def read_truth(path):
+    """The motor's parameters from the dataset's '# key=value' lines, or None if one is missing."""
+    metadata = {}
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") and "=" in line:
+                key, _, value = line[1:].partition("=")
+                metadata[key.strip()] = value.strip()
+            elif line.strip() and not line.startswith("#"):
+                break
+    try:
+        return [float(metadata[name]) for name in NAMES]
+    except (KeyError, ValueError):
+        return None
 
 
 def read_rows(path, id_threshold):
@@ -70,9 +92,12 @@ def main():
             w = [float(p.get("w%d" % i, "0.25")) for i in range(1, 5)]
             # (sample, weight of r_d, weight of r_q): the id = 0 samples, then the injected ones.
             samples = [(r, w[0], w[1]) for r in plain] + [(r, w[2], w[3]) for r in injected]
-            sys.stdout.write(json.dumps({"type": "description", "version": VERSION, "dimension": 4,
-                                         "lower": LOWER, "upper": UPPER,
-                                         "names": ["Rs", "Ld", "Lq", "psi"]}) + "\n")
+            description = {"type": "description", "version": VERSION, "dimension": 4,
+                           "lower": LOWER, "upper": UPPER, "names": NAMES}
+            truth = read_truth(p["data"])
+            if truth is not None:
+                description["truth"] = truth
+            sys.stdout.write(json.dumps(description) + "\n")
         elif message["type"] == "eval":
             values = []
             for rs, ld, lq, psi in message["x"]:

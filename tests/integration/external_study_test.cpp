@@ -1,7 +1,9 @@
 // External programs in a real `mhbench run` study: a Python optimiser beside a built-in one on a
 // Python problem, byte-identical with 1 and 2 threads; a problem whose program crashes fails its
 // own runs with one line each while the study's other runs finish; a changed script is refused
-// on extension like a changed data file.
+// on extension like a changed data file; a program that exits before reading all it was sent is
+// a failed run or the end of a complete one, never a SIGPIPE that ends mhbench without a word.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -34,6 +36,9 @@ std::string python(const std::string& script, const std::string& arguments = "")
 const std::string es = std::string(MHB_SOURCE_DIR) + "/scripts/external/one_plus_one_es.py";
 const std::string sphere = std::string(MHB_SOURCE_DIR) + "/scripts/external/sphere_problem.py";
 const std::string faulty = std::string(MHB_TEST_DATA_DIR) + "/external/faulty_problem.py";
+const std::string pmsm = std::string(MHB_SOURCE_DIR) + "/scripts/external/pmsm_steady_problem.py";
+const std::string early_problem = std::string(MHB_TEST_DATA_DIR) + "/external/early_exit_problem.py";
+const std::string early_optimizer = std::string(MHB_TEST_DATA_DIR) + "/external/early_exit_optimizer.py";
 
 TEST(ExternalStudy, PythonOptimiserAndProblemGiveTheSameRecordsOnOneAndTwoThreads) {
     // The reference clients ignore further arguments: a marker that only this test's processes carry.
@@ -77,6 +82,104 @@ TEST(ExternalStudy, ACrashingProblemFailsItsOwnRunsAndTheOthersFinish) {
             ++failed;
     EXPECT_EQ(failed, 2) << runs;
     EXPECT_TRUE(mhb::test_support::processes_with("study-crash-marker").empty());
+}
+
+// pso's first population at dimension 100 is one eval message of about 400 KiB, far more than the
+// pipe holds; the program exits without reading it, so mhbench's write of the rest has no reader.
+TEST(ExternalStudy, AProblemThatExitsBeforeReadingABatchFailsItsRunsAndMhbenchSaysSo) {
+    const fs::path dir = fresh("external_early_problem");
+    const auto r =
+        run_mhbench("run --algorithms pso:np=200 --problem " +
+                    spec("external", python(early_problem, "100 early-problem-marker")) +
+                    " --runs 2 --evaluations 2000 --seed 5 --no-report --threads 2 --out " + dir.string());
+    EXPECT_EQ(r.exit_code, 1) << r.err; // failed runs, not a signal (141)
+    EXPECT_NE(r.out.find("study finished: 2 runs (2 failed)"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("2 of 2 runs failed"), std::string::npos) << r.err;
+    const auto rows = lines_of(read_text(dir / "runs.csv"));
+    ASSERT_EQ(rows.size(), 3U);
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        // Named by its script, not by the interpreter that runs it.
+        EXPECT_NE(rows[i].find("early_exit_problem.py exited with status 3 before reading all it was sent; "
+                               "its stderr: early: the model gave up"),
+                  std::string::npos)
+            << rows[i];
+        EXPECT_NE(rows[i].find(",failed,"), std::string::npos) << rows[i];
+    }
+    EXPECT_TRUE(mhb::test_support::processes_with("early-problem-marker").empty());
+}
+
+// An optimiser may exit once its budget is spent without waiting for "stop": after its whole last
+// answer (mhbench's "stop" then races with its exit: under load it lost, and SIGPIPE ended
+// mhbench), or after the start of it (the rest has no reader, every time). Either run is complete.
+TEST(ExternalStudy, AnOptimiserThatExitsOnceItsBudgetIsSpentCompletesItsRuns) {
+    const fs::path dir = fresh("external_early_optimizer");
+    const auto r = run_mhbench(
+        "run --algorithm " +
+        spec("external", python(early_optimizer, "answer 100 early-opt-marker"), "label=answer") +
+        " --algorithm " +
+        spec("external", python(early_optimizer, "partial 100 early-opt-marker"), "label=partial") +
+        " --problems sphere:dim=100 --runs 15 --evaluations 300 --seed 5 --no-report --threads 2 "
+        "--out " +
+        dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("study finished: 30 runs (0 failed), 9000 evaluations"), std::string::npos) << r.out;
+    EXPECT_TRUE(mhb::test_support::wait_until(
+        [] { return mhb::test_support::processes_with("early-opt-marker").empty(); }, 5.0));
+}
+
+TEST(ExternalStudy, PluginCheckOfAnOptimiserThatExitsEarlyPrintsItsLines) {
+    const auto r =
+        run_mhbench("plugin-check --problem sphere:dim=100 --runs 2 --evaluations 300 --algorithm " +
+                    spec("external", python(early_optimizer, "partial 100 early-check-marker")));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("pass  budget"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("verdict: pass"), std::string::npos) << r.out;
+}
+
+// The cells of a CSV line, quoted fields ("..." with "" for a quote) unquoted.
+std::vector<std::string> cells_of(const std::string& line) {
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+            cells.back() += line[++i];
+        else if (c == '"')
+            quoted = !quoted;
+        else if (c == ',' && !quoted)
+            cells.emplace_back();
+        else
+            cells.back() += c;
+    }
+    return cells;
+}
+
+// The Python PMSM model reads the motor's parameters from the dataset's metadata and declares them
+// ("truth"): runs.csv gets the true values and the estimates' errors, as for the built-in model.
+TEST(ExternalStudy, AProblemThatDeclaresItsTruthFillsTheTrueAndErrorColumns) {
+    const fs::path dir = fresh("external_truth");
+    const std::string data = std::string(MHB_TEST_DATA_DIR) + "/pmsm/pmsm_public_2200rpm_2.5Nm_clean_ss.csv";
+    const auto r = run_mhbench("run --algorithms tlbo --problem " +
+                               spec("external", python(pmsm), "params=data=" + data) +
+                               " --runs 1 --evaluations 2000 --seed 5 --no-report --out " + dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto rows = lines_of(read_text(dir / "runs.csv"));
+    ASSERT_EQ(rows.size(), 2U);
+    const auto header = cells_of(rows[0]);
+    const auto row = cells_of(rows[1]);
+    const auto at = [&](const std::string& column) {
+        const auto found = std::find(header.begin(), header.end(), column);
+        return found == header.end() || static_cast<std::size_t>(found - header.begin()) >= row.size()
+                   ? std::string("(no column)")
+                   : row[static_cast<std::size_t>(found - header.begin())];
+    };
+    const std::pair<const char*, const char*> truths[] = {
+        {"Rs", "0.33"}, {"Ld", "0.00324"}, {"Lq", "0.00324"}, {"psi", "0.0776"}};
+    for (const auto& [name, truth] : truths) {
+        EXPECT_EQ(at(std::string(name) + "_true"), truth) << rows[0] << "\n" << rows[1];
+        const std::string error = at(std::string(name) + "_err_pct");
+        EXPECT_FALSE(error.empty() || error == "(no column)") << name << ": " << rows[1];
+    }
 }
 
 TEST(ExternalStudy, AChangedScriptIsRefusedOnExtension) {

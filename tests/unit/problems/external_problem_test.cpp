@@ -51,6 +51,14 @@ TEST(ExternalCommand, SplitsWordsKeepsQuotedBlanksAndOneSpecPerQuotedCommand) {
               (std::map<std::string, std::string>{{"a", "1"}, {"b", "x=y"}}));
 }
 
+TEST(ExternalCommand, MessagesNameTheScriptNotItsInterpreter) {
+    const std::string script = std::string(MHB_SOURCE_DIR) + "/scripts/external/sphere_problem.py";
+    EXPECT_EQ(external::program_name({"/usr/bin/python3", script, "dim=3"}), script);
+    EXPECT_EQ(external::program_name({"python3", "-u", script}), script);
+    EXPECT_EQ(external::program_name({"/usr/bin/python3", "-c", "print(1)"}), "/usr/bin/python3");
+    EXPECT_EQ(external::program_name({"mymodel", "--fast"}), "mymodel");
+}
+
 TEST(ExternalProblem, DescribesItselfAndEvaluatesExactly) {
     const auto problem = external(reference_client("sphere_problem.py"), "params=dim=3");
     EXPECT_EQ(problem->name(), "external");
@@ -109,6 +117,9 @@ TEST(ExternalProblem, ThePythonPmsmModelEqualsTheBuiltInAndItlboIdentifiesThroug
     EXPECT_EQ(python->bounds().lower, builtin->bounds().lower);
     EXPECT_EQ(python->bounds().upper, builtin->bounds().upper);
     EXPECT_EQ(python->parameter_names(), builtin->parameter_names());
+    // The motor's parameters, from the dataset's metadata lines, as the built-in reads them.
+    ASSERT_TRUE(python->true_parameters());
+    EXPECT_EQ(*python->true_parameters(), *builtin->true_parameters());
     Rng rng(3);
     std::vector<Eigen::VectorXd> points{*builtin->true_parameters(), builtin->known_optimum()->x.value()};
     for (int i = 0; i < 30; ++i)
@@ -228,7 +239,9 @@ INSTANTIATE_TEST_SUITE_P(
     Faults, ExternalProblemFault,
     testing::Values(Fault{"crash", "exited with status 3; its stderr: faulty: segmentation"},
                     Fault{"hang", "did not answer within"},
-                    Fault{"garbage", "not a JSON object: 'Warning: model converged"},
+                    Fault{"garbage", "faulty_problem.py: wrote a line that is not a JSON object ('Warning: "
+                                     "model converged slowly'): stdout carries the protocol; print "
+                                     "your own output to stderr"},
                     Fault{"nan", "returned NaN for point 1 of 2"}, Fault{"count", "f has 1 numbers, not 2"}),
     [](const auto& test) { return test.param.mode; });
 
@@ -249,6 +262,39 @@ TEST(ExternalProblem, PastTheRestartLimitTheRunFailsWhateverThePolicy) {
         }
     }
     expect_no_child_left(marker);
+}
+
+TEST(ExternalProblem, ADeclaredTruthIsItsTrueParametersAndOutsideTheBoxAWarning) {
+    {
+        const auto inside = external(test_client("truth_problem.py"), "params=truth=1:-2");
+        ASSERT_TRUE(inside->true_parameters());
+        EXPECT_EQ(*inside->true_parameters(), point(1, -2));
+        EXPECT_TRUE(inside->warnings().empty());
+        const auto outside = external(test_client("truth_problem.py"), "params=truth=7:0");
+        ASSERT_EQ(outside->warnings().size(), 1U);
+        EXPECT_NE(outside->warnings()[0].find("the truth it declares lies outside its box"),
+                  std::string::npos);
+        EXPECT_FALSE(external(reference_client("sphere_problem.py"), "params=dim=2")->true_parameters());
+    }
+    EXPECT_TRUE(children_of_this_process().empty());
+}
+
+TEST(ExternalProblem, ATruthOfTheWrongSizeNotFiniteOrUnnamedIsAConfigurationError) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"truth=1", "truth has 1 numbers, not 2"},
+        {"truth=1:inf", "\"truth\" holds a value that is not a finite number"},
+        {"truth=1:nan", "\"truth\" holds a value that is not a finite number"},
+        {"truth=1:2;names=0", "\"truth\" needs \"names\""},
+    };
+    for (const auto& [params, message] : cases) {
+        try {
+            (void)external(test_client("truth_problem.py"), std::string("params=") + params);
+            ADD_FAILURE() << params << ": no error";
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << params << ": " << e.what();
+        }
+    }
+    EXPECT_TRUE(children_of_this_process().empty());
 }
 
 TEST(ExternalProblem, AProgramThatExitsAtStartUpIsAConfigurationError) {
