@@ -72,7 +72,13 @@ inline CliResult run_shell(const std::string& command) {
 
 // Runs `mhbench ARGS` (ARGS as typed in a shell).
 inline CliResult run_mhbench(const std::string& args) {
-    return run_shell(std::string("'") + MHB_CLI_PATH + "' " + args);
+    // Appended piece by piece: GCC 12 takes `std::string("'") + MHB_CLI_PATH + ...`, inlined, for a
+    // copy past the first temporary's small buffer (a false -Warray-bounds).
+    std::string command = "'";
+    command += MHB_CLI_PATH;
+    command += "' ";
+    command += args;
+    return run_shell(command);
 }
 
 } // namespace mhb::testing_cli

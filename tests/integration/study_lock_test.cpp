@@ -26,21 +26,23 @@ const std::string slow_study = "--algorithms 'random-search:batch=50 tlbo' --pro
                                "--evaluations 100000 --runs 40 --threads 2 --quiet --no-report";
 
 // A shell script: a first run of slow_study into `dir`; once it has written its lock and its first
-// run, `meanwhile`, then a second run (stderr in logs/run.err) and a report (logs/report.err) into
-// `dir`, each printing its exit status ("run=1"), with `dir` listed before them (logs/before) and
-// after (logs/after); then the first's pid ("pid=...") and exit status ("first=0").
+// run, it is stopped (SIGSTOP: it holds its lock and writes nothing, so that what changes in `dir`
+// is the others' doing, however fast the machine), `meanwhile`, then a second run (stderr in
+// logs/run.err) and a report (logs/report.err) into `dir`, each printing its exit status
+// ("run=1"), with `dir` listed before them (logs/before) and after (logs/after); then the first
+// goes on, and its pid ("pid=...") and exit status ("first=0") are printed.
 std::string while_the_first_writes(const fs::path& dir, const fs::path& logs, const std::string& meanwhile) {
     const std::string first =
         std::string("'") + MHB_CLI_PATH + "' run " + slow_study + " --out '" + dir.string() + "'";
     const std::string lock = (dir / ".mhbench.lock").string();
     return first + " & pid=$!; i=0; while ! ( grep -q '^pid = ' '" + lock + "' && [ -s '" +
            (dir / "store.bin").string() +
-           "' ] ) 2>/dev/null && [ $i -lt 3000 ]; do sleep 0.01; i=$((i+1)); done; " + meanwhile +
-           "; ls -A '" + dir.string() + "' > '" + (logs / "before").string() + "'; " + first + " 2>'" +
-           (logs / "run.err").string() + "'; echo \"run=$?\"; '" + MHB_CLI_PATH + "' report '" +
+           "' ] ) 2>/dev/null && [ $i -lt 3000 ]; do sleep 0.01; i=$((i+1)); done; kill -STOP $pid; " +
+           meanwhile + "; ls -A '" + dir.string() + "' > '" + (logs / "before").string() + "'; " + first +
+           " 2>'" + (logs / "run.err").string() + "'; echo \"run=$?\"; '" + MHB_CLI_PATH + "' report '" +
            dir.string() + "' --no-figures >/dev/null 2>'" + (logs / "report.err").string() +
            "'; echo \"report=$?\"; ls -A '" + dir.string() + "' > '" + (logs / "after").string() +
-           "'; echo \"pid=$pid\"; wait $pid; echo \"first=$?\"";
+           "'; kill -CONT $pid; echo \"pid=$pid\"; wait $pid; echo \"first=$?\"";
 }
 
 TEST(StudyLock, ASecondWriterIsRefusedWhileTheFirstRunsAndTheFirstEndsAsACleanRun) {
