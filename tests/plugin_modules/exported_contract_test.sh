@@ -51,6 +51,10 @@ for header in $headers; do
 done
 functions=$checked
 
+# Typeinfos of function types ("typeinfo for mhb::Registry<mhb::Problem> const& ()"), which clang's
+# -fsanitize=function emits beside each function of a sanitized build, are nobody's class: left out.
+not_a_function_type() { grep -vE '^(typeinfo|typeinfo name) for .*\)$' || true; }
+
 # Classes: those the headers define ("struct Name {", "class Name : Base {"), not only declare.
 classes=$(for header in $headers; do
     sed -e 's|//.*||' -e 's/template *<[^>]*>//g' -e 's/enum \(class\|struct\)/enum/' "$source_dir/$header" |
@@ -61,14 +65,15 @@ for class in $classes; do
     while IFS= read -r symbol; do
         expect_exported "$symbol" "a class of the installed headers"
     done < <(sed 's/^[^ ]* [A-Za-z] //' "$defined" |
-        grep -E "^(vtable|VTT|typeinfo|typeinfo name) for mhb::${class}(<.*)?$" | sort -u)
+        grep -E "^(vtable|VTT|typeinfo|typeinfo name) for mhb::${class}(<.*)?$" | not_a_function_type | sort -u)
 done
 class_data=$((checked - functions))
 
 # The unoptimised module: what it needs from mhbench, mhbench exports.
 while IFS= read -r symbol; do
     expect_exported "$symbol" "left undefined by $(basename "$module")"
-done < <(nm -u -C "$module" | sed 's/^ *U //' | grep -E '^(mhb::|(vtable|VTT|typeinfo|typeinfo name) for mhb::)')
+done < <(nm -u -C "$module" | sed 's/^ *U //' | grep -E '^(mhb::|(vtable|VTT|typeinfo|typeinfo name) for mhb::)' |
+    not_a_function_type)
 
 echo "$checked symbols checked ($functions functions, $class_data vtables and typeinfos of" \
      "$(echo "$classes" | wc -w) classes, the rest needed by $(basename "$module")), $missing not exported"
