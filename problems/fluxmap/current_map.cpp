@@ -1,4 +1,5 @@
-// The current maps of current_map.hpp. The sum of squares runs over blocks of points held in
+// The current maps of current_map.hpp: four exponentials and one logarithm per point per evaluation
+// of PM-SyRM (three exponentials for SyRM). The sum of squares runs over blocks of points held in
 // fixed-size arrays on the stack, so that an evaluation allocates nothing and every temporary
 // stays in cache.
 #include "problems/fluxmap/current_map.hpp"
@@ -19,6 +20,17 @@ template <class LogArray> Block power(const LogArray& log_x, double p) {
     if (p == 0.0)
         return Block::Ones(log_x.size());
     return (p * log_x).exp();
+}
+
+// d^U q^V as one exp(U log d + V log q) rather than a product of two: one transcendental less per
+// point. A zero exponent drops its term, so that 0^0 = 1 holds here too.
+template <class LogD, class LogQ>
+Block cross_power(const LogD& log_d, double u, const LogQ& log_q, double v) {
+    if (u == 0.0)
+        return power(log_q, v);
+    if (v == 0.0)
+        return power(log_d, u);
+    return (u * log_d + v * log_q).exp();
 }
 
 } // namespace
@@ -62,9 +74,7 @@ struct BlockModel {
                     Block& i_q) const {
         const auto psi_d = map.psi_d.segment(k, n);
         const auto psi_q = map.psi_q.segment(k, n);
-        const Block dU = power(log_d.segment(k, n), t[7]);
-        const Block qV = power(log_q.segment(k, n), t[8]);
-        const Block cross = dU * qV; // d^U q^V
+        const Block cross = cross_power(log_d.segment(k, n), t[7], log_q.segment(k, n), t[8]); // d^U q^V
         const Block g_d =
             t[0] + t[1] * power(log_d.segment(k, n), t[5]) + t[4] / (t[8] + 2) * cross * q2.segment(k, n);
         const Block g_q =
