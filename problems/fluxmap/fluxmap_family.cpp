@@ -30,10 +30,12 @@ public:
     }
     [[nodiscard]] std::optional<Eigen::VectorXd> true_parameters() const override { return truth_; }
     [[nodiscard]] std::vector<DataFile> data_files() const override { return files_; }
+    [[nodiscard]] std::vector<std::string> warnings() const override { return warnings_; }
 
     std::optional<KnownOptimum> optimum_;
     std::optional<Eigen::VectorXd> truth_;
     std::vector<DataFile> files_;
+    std::vector<std::string> warnings_;
 
 private:
     CurrentMap map_;
@@ -135,6 +137,10 @@ std::unique_ptr<Problem> make_fluxmap(const ParameterValues& p) {
         const KnownOptimum best = baldor_optimum(model);
         if (problem->bounds().contains(*best.x))
             problem->optimum_ = best;
+        if (model == Model::syrm)
+            problem->warnings_.push_back(
+                "fluxmap: the best-known SyRM optimum of the Baldor map has a_d0 = 0, on "
+                "its lower bound (SyRM has no magnet term for this PM machine)");
     }
     problem->truth_ = truth;
     problem->files_ = std::move(files);

@@ -9,11 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "problems/core/sha256.hpp"
 #include "problems/fluxmap/baldor_optimum.hpp"
 #include "problems/fluxmap/current_map.hpp"
 #include "problems/fluxmap/current_map_fit.hpp"
 #include "problems/fluxmap/synthetic_map.hpp"
 #include "problems/problem_registry.hpp"
+#include "support/files.hpp"
 
 namespace mhb {
 namespace {
@@ -23,7 +25,7 @@ struct FluxPoint {
 };
 
 // The shipped map read with nothing of problems/fluxmap.
-std::vector<FluxPoint> shipped_points() {
+std::vector<FluxPoint> flux_shipped_points() {
     std::ifstream in(std::string(MHB_SOURCE_DIR) + "/problems/fluxmap/data/baldor-ecs101m0h7ef4-400rpm.csv");
     std::string line;
     std::getline(in, line);
@@ -75,7 +77,7 @@ std::string fluxmap_error_of(const std::string& spec) {
 }
 
 TEST(FluxMapProblem, ObjectiveMatchesThePapersFormulasPointByPoint) {
-    const auto points = shipped_points();
+    const auto points = flux_shipped_points();
     ASSERT_EQ(points.size(), 567u);
     const auto pm = builtin_problems().create("fluxmap");
     const auto syrm = builtin_problems().create("fluxmap:model=syrm");
@@ -91,12 +93,20 @@ TEST(FluxMapProblem, ObjectiveMatchesThePapersFormulasPointByPoint) {
     }
 }
 
+TEST(FluxMapProblem, ShippedMapIsTheRecordedFile) {
+    const auto bytes = test_support::read_text(std::string(MHB_SOURCE_DIR) + "/problems/fluxmap/data/" +
+                                               fluxmap::baldor_map_name);
+    EXPECT_EQ(sha256_hex(bytes), fluxmap::baldor_map_sha256);
+    EXPECT_EQ(fluxmap::baldor_flux_map().size(), 567);
+    EXPECT_EQ(flux_shipped_points().back().psi_q, fluxmap::baldor_flux_map().psi_q[566]);
+}
+
 TEST(FluxMapProblem, ZeroExponentIsOneAtZeroFlux) {
     // psi_q = 0 on the i_q = 0 row: q^0 must be 1 there (std::pow's convention), not NaN.
     std::vector<double> t = flux_odd_theta;
     t[8] = 0.0; // V
     const auto pm = builtin_problems().create("fluxmap");
-    const double want = flux_plain_objective(shipped_points(), t);
+    const double want = flux_plain_objective(flux_shipped_points(), t);
     EXPECT_NEAR(pm->evaluate(flux_theta(t, 14)), want, 1e-12 * want);
 }
 
@@ -157,6 +167,7 @@ TEST(FluxMapProblem, ShippedOptimumIsWhereItIsSaid) {
         EXPECT_TRUE(problem->bounds().contains(*known->x));
         EXPECT_NEAR(problem->evaluate(*known->x), known->f, 1e-13 * known->f);
         EXPECT_EQ(problem->parameter_names(), fluxmap::parameter_names(model));
+        EXPECT_EQ(problem->warnings().size(), model == fluxmap::Model::syrm ? 1u : 0u);
     }
 }
 
