@@ -1,6 +1,8 @@
 // The flux-map CSV reader (flux_map.hpp): one clear line per defect, naming file, line, column.
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -18,6 +20,24 @@ namespace mhb::fluxmap {
 namespace {
 
 constexpr std::array<std::string_view, 4> column_names = {"i_d", "i_q", "psi_d", "psi_q"};
+
+// "nan", "inf", "infinity" in any case, with an optional sign: what strtod reads as non-finite.
+bool names_non_finite(std::string_view text) {
+    if (!text.empty() && (text.front() == '+' || text.front() == '-'))
+        text.remove_prefix(1);
+    std::string lower(text);
+    for (char& ch : lower)
+        ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    return lower == "nan" || lower == "inf" || lower == "infinity";
+}
+
+// A number too large for a double (1e400): refused for its range, not as "not a number".
+bool beyond_double(std::string_view text) {
+    const std::string copy(text);
+    char* end = nullptr;
+    const double v = std::strtod(copy.c_str(), &end);
+    return end == copy.c_str() + copy.size() && std::isinf(v);
+}
 
 class Reader {
 public:
@@ -52,21 +72,14 @@ public:
         if (text.empty())
             fail(line, label + "the field is empty");
         double v = 0;
-        if (!parse_real(text, v)) {
-            const std::string lower = [&] {
-                std::string s(text.substr(0, 8));
-                for (char& ch : s)
-                    ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-                return s;
-            }();
-            const bool non_finite =
-                lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos;
-            fail(line, label + quoted_excerpt(text) +
-                           (non_finite ? " is not finite (NaN or infinity)" : " is not a number"));
-        }
+        const bool number = parse_real(text, v);
+        if (!number && names_non_finite(text))
+            fail(line, label + quoted_excerpt(text) + " is not finite (NaN or infinity)");
+        if (!number && !beyond_double(text))
+            fail(line, label + quoted_excerpt(text) + " is not a number");
         const bool current = column < 2;
         const double limit = current ? max_current : max_flux;
-        if (std::fabs(v) > limit)
+        if (!number || std::fabs(v) > limit)
             fail(line,
                  label + value_excerpt(text) +
                      (current ? " is outside [-1e5, 1e5] A (a machine's current; larger is damage or mA)"

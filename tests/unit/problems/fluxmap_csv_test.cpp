@@ -52,9 +52,15 @@ TEST(FluxMapCsv, EachDefectIsOneLineNamingFileLineAndColumn) {
         {flux_csv_text("1,-inf,0.5,0.3\n"),
          "map.csv: line 12, column 'i_q': '-inf' is not finite (NaN or infinity)"},
         {flux_csv_text("1,abc,0.5,0.3\n"), "map.csv: line 12, column 'i_q': 'abc' is not a number"},
+        {flux_csv_text("1,banana,0.5,0.3\n"), "map.csv: line 12, column 'i_q': 'banana' is not a number"},
+        {flux_csv_text("1,2,0.5,+Infinity\n"),
+         "map.csv: line 12, column 'psi_q': '+Infinity' is not finite (NaN or infinity)"},
         {flux_csv_text("1,,0.5,0.3\n"), "map.csv: line 12, column 'i_q': the field is empty"},
         {flux_csv_text("2e5,1,0.5,0.3\n"), "map.csv: line 12, column 'i_d': 2e5 is outside [-1e5, 1e5] A (a "
                                            "machine's current; larger is damage or mA)"},
+        {flux_csv_text("1,1,-1e400,0.5\n"),
+         "map.csv: line 12, column 'psi_d': -1e400 is outside [-100, 100] V s (a "
+         "machine's flux linkage; larger is damage or mV s)"},
         {flux_csv_text("1,1,0.5,300\n"),
          "map.csv: line 12, column 'psi_q': 300 is outside [-100, 100] V s (a "
          "machine's flux linkage; larger is damage or mV s)"},
