@@ -7,6 +7,7 @@ void register_classic_functions(ProblemRegistry& registry);
 void register_bbob(ProblemRegistry& registry);
 void register_pmsm(ProblemRegistry& registry);
 void register_cec(ProblemRegistry& registry);
+void register_fluxmap(ProblemRegistry& registry);
 void register_external_problem(ProblemRegistry& registry);
 
 void register_builtin_problems(ProblemRegistry& registry) {
@@ -14,6 +15,7 @@ void register_builtin_problems(ProblemRegistry& registry) {
     register_bbob(registry);
     register_pmsm(registry);
     register_cec(registry);
+    register_fluxmap(registry);
     register_external_problem(registry);
 }
 

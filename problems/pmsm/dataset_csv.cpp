@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "problems/core/csv_fields.hpp"
 #include "problems/core/parameters.hpp"
 #include "problems/core/sha256.hpp"
 #include "problems/core/text_excerpt.hpp"
@@ -25,27 +26,6 @@ namespace {
 constexpr std::array<std::string_view, 7> column_names = {"t", "ud", "uq", "id", "iq", "omega", "injected"};
 constexpr std::size_t injected_column = 6;
 static_assert(max_dataset_magnitude == 1e9, "the messages below say [-1e9, 1e9]");
-
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
-        s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-        s.remove_suffix(1);
-    return s;
-}
-
-std::vector<std::string_view> split_fields(std::string_view line) {
-    std::vector<std::string_view> out;
-    std::size_t start = 0;
-    while (true) {
-        const auto comma = line.find(',', start);
-        out.push_back(trim(
-            line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
-        if (comma == std::string_view::npos)
-            return out;
-        start = comma + 1;
-    }
-}
 
 class ErrorContext {
 public:
@@ -104,27 +84,27 @@ Dataset read_dataset_csv(std::istream& in, const std::string& source, const Data
 
     while (std::getline(in, line)) {
         ++line_number;
-        std::string_view text = trim(line);
+        std::string_view text = trim_csv_field(line);
         if (line_number == 1 && text.substr(0, 3) == "\xEF\xBB\xBF") // a UTF-8 byte-order mark
-            text = trim(text.substr(3));
+            text = trim_csv_field(text.substr(3));
         if (text.empty())
             continue;
         if (text.front() == '#') {
             if (header_line != 0)
                 ctx.fail(line_number, "metadata line after the header");
-            const std::string_view body = trim(text.substr(1));
+            const std::string_view body = trim_csv_field(text.substr(1));
             const auto eq = body.find('=');
             if (eq == std::string_view::npos)
                 continue; // a plain comment
-            const std::string key(trim(body.substr(0, eq)));
+            const std::string key(trim_csv_field(body.substr(0, eq)));
             if (key.empty())
                 ctx.fail(line_number, "metadata line " + quoted_excerpt(text) + " has an empty key");
             if (data.find_metadata(key) != nullptr)
                 ctx.fail(line_number, "metadata key " + quoted_excerpt(key) + " is given twice");
-            data.metadata.emplace_back(key, std::string(trim(body.substr(eq + 1))));
+            data.metadata.emplace_back(key, std::string(trim_csv_field(body.substr(eq + 1))));
             continue;
         }
-        const auto fields = split_fields(text);
+        const auto fields = split_csv_fields(text);
         if (header_line == 0) {
             header_line = line_number;
             std::array<bool, column_names.size()> seen{};

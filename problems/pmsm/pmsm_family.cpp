@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "problems/core/bound_text.hpp"
 #include "problems/pmsm/dynamic_model.hpp"
 #include "problems/pmsm/linear_model_problem.hpp"
 #include "problems/pmsm/output_error_problem.hpp"
@@ -23,18 +24,7 @@ namespace {
 
 // `lo:hi` with finite lo < hi, e.g. `rs=0:1`.
 void parse_bound(const ParameterValues& p, const char* key, Eigen::Index index, Box& box) {
-    const std::string& text = p.text(key);
-    const auto colon = text.find(':');
-    double lo = 0, hi = 0;
-    if (colon == std::string::npos || !parse_real(text.substr(0, colon), lo) ||
-        !parse_real(text.substr(colon + 1), hi))
-        throw std::invalid_argument(std::string("pmsm: parameter '") + key + "' = " + text +
-                                    " is not of the form lo:hi (two finite numbers, e.g. 0:0.5)");
-    if (!(lo < hi))
-        throw std::invalid_argument(std::string("pmsm: parameter '") + key + "' = " + text +
-                                    " needs lo < hi");
-    box.lower[index] = lo;
-    box.upper[index] = hi;
+    parse_bound_text("pmsm", key, p.text(key), "0:0.5", box.lower[index], box.upper[index]);
 }
 
 // The search box: the paper's for the paper's motor or when nothing is known of the motor, else
