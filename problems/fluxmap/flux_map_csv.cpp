@@ -1,8 +1,11 @@
 // The flux-map CSV reader (flux_map.hpp): one clear line per defect, naming file, line, column.
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -125,8 +128,8 @@ FluxMap read_flux_map_csv(std::istream& in, const std::string& source, Eigen::In
         rows.push_back(row);
     }
     if (static_cast<Eigen::Index>(rows.size()) < min_points)
-        reader.fail_file("has " + std::to_string(rows.size()) + " points, fewer than the model's " +
-                         std::to_string(min_points) + " parameters");
+        reader.fail_file("has " + std::to_string(rows.size()) + (rows.size() == 1 ? " point" : " points") +
+                         ", fewer than the model's " + std::to_string(min_points) + " parameters");
     FluxMap map;
     const auto n = static_cast<Eigen::Index>(rows.size());
     map.i_d.resize(n), map.i_q.resize(n), map.psi_d.resize(n), map.psi_q.resize(n);
@@ -138,9 +141,13 @@ FluxMap read_flux_map_csv(std::istream& in, const std::string& source, Eigen::In
 }
 
 FluxMap read_flux_map_csv(const std::string& path, Eigen::Index min_points, std::string* sha256) {
+    // A directory opens as a stream that reads nothing: say what it is rather than "no header".
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw std::runtime_error(path + ": cannot be read (" + std::strerror(EISDIR) + ")");
     std::ifstream file(path, std::ios::binary);
     if (!file)
-        throw std::runtime_error(path + ": cannot be opened");
+        throw std::runtime_error(path + ": cannot be opened (" + std::strerror(errno) + ")");
     std::ostringstream bytes;
     bytes << file.rdbuf();
     const std::string text = bytes.str();

@@ -322,6 +322,28 @@ std::vector<BadInputCase> catalogue() {
          "identify --data d.csv", 0, stderr_says({})},
         {dataset_with("s/,[^,]*,\\([01]\\)$/,0,\\1/"), "identify --data d.csv", 0, stderr_says({})},
 
+        // ---- run: measured flux maps as problems (fluxmap:data=FILE)
+        {"", "run --algorithms pso --problems fluxmap:data=none.csv --evaluations 100 --out s", 2,
+         stderr_says({"mhbench run: none.csv: cannot be opened (No such file or directory)"})},
+        {"mkdir m.csv", "run --algorithms pso --problems fluxmap:data=m.csv --evaluations 100 --out s", 2,
+         stderr_says({"mhbench run: m.csv: cannot be read (Is a directory)"})},
+        {"printf 'i_d,i_q,psi_d,psi_q\\n1,2,0.1,0.2\\n' > m.csv",
+         "run --algorithms pso --problems fluxmap:data=m.csv --evaluations 100 --out s", 2,
+         stderr_says({"mhbench run: m.csv: has 1 point, fewer than the model's 14 parameters"})},
+        {"printf 'i_d,i_q,psi_d\\n1,2,0.1\\n' > m.csv",
+         "run --algorithms pso --problems fluxmap:data=m.csv --evaluations 100 --out s", 2,
+         stderr_says({"mhbench run: m.csv: line 1, the header has no column 'psi_q' (a flux map has the columns "
+                      "i_d,i_q,psi_d,psi_q)"})},
+        {"printf 'i_d,i_q,psi_d,psi_q\\n1,2,0.1,nan\\n' > m.csv",
+         "run --algorithms pso --problems fluxmap:data=m.csv --evaluations 100 --out s", 2,
+         stderr_says({"mhbench run: m.csv: line 2, column 'psi_q': 'nan' is not finite (NaN or infinity)"})},
+        {"", "run --algorithms pso --problems fluxmap:W=-1:2 --evaluations 100 --out s", 2,
+         stderr_says({"mhbench run: fluxmap: parameter 'W' = -1:2 needs lo >= 0 (a negative power of a zero flux "
+                      "linkage is infinite)"})},
+        {"", "run --algorithms pso --problems fluxmap:synthetic=on,truth=1/2/3 --evaluations 100 --out s", 2,
+         stderr_says({"mhbench run: fluxmap: parameter 'truth' = 1/2/3 has 3 values; model=pmsyrm has 14 parameters, "
+                      "written v1/v2/..."})},
+
         // ---- eval and points files
         {"", "eval --problem sphere:dim=2", 2, one_line("--points")},
         {"", "eval --problem nope --points p.txt", 2, one_line("mhbench eval: unknown problem 'nope'; known: ")},
