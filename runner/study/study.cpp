@@ -278,7 +278,6 @@ void check_dimension_budgets(const PreparedStudy& prepared, std::vector<std::str
     }
 }
 
-// A protocol names its suite and records errors at fractions of the evaluation budget.
 // Every optimiser against every dimension of the study's problems (Optimizer::refusal): a
 // population too small for the method or too large for memory is refused now, in one line per
 // optimiser and dimension, rather than as a failure of each of its runs.
@@ -294,6 +293,7 @@ void check_optimizer_dimensions(const PreparedStudy& prepared, std::vector<std::
                 errors.push_back(std::move(*refusal));
 }
 
+// A protocol names its suite and records errors at fractions of the evaluation budget.
 void check_protocol(const PreparedStudy& prepared, std::vector<std::string>& errors) {
     const std::string& name = prepared.study.protocol;
     if (name.empty())
