@@ -1,8 +1,11 @@
-// Splitting a line of a data CSV into its fields, shared by the readers of problems/pmsm and
-// problems/fluxmap: fields are separated by ',' and lose the blanks (and a CRLF file's '\r') at
-// either end; there is no quoting, since data files hold numbers.
+// Splitting a line of a data CSV into its fields, and its errors, shared by the readers of
+// problems/pmsm and problems/fluxmap: fields are separated by ',' and lose the blanks (and a CRLF file's
+// '\r') at either end; there is no quoting, since data files hold numbers.
 #pragma once
 
+#include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -30,5 +33,21 @@ inline std::vector<std::string_view> split_csv_fields(std::string_view line) {
         start = comma + 1;
     }
 }
+
+// The one-line errors of a data file: "SOURCE: line N, what" for a defect of one line, "SOURCE:
+// what" for one of the whole file. `source` must outlive it.
+class CsvErrors {
+public:
+    explicit CsvErrors(const std::string& source) : source_(source) {}
+    [[noreturn]] void fail(std::size_t line, const std::string& what) const {
+        throw std::runtime_error(source_ + ": line " + std::to_string(line) + ", " + what);
+    }
+    [[noreturn]] void fail_file(const std::string& what) const {
+        throw std::runtime_error(source_ + ": " + what);
+    }
+
+private:
+    const std::string& source_;
+};
 
 } // namespace mhb

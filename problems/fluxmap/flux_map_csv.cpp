@@ -42,16 +42,9 @@ bool beyond_double(std::string_view text) {
     return end == copy.c_str() + copy.size() && std::isinf(v);
 }
 
-class Reader {
+class Reader : public CsvErrors {
 public:
-    explicit Reader(const std::string& source) : source_(source) {}
-
-    [[noreturn]] void fail(std::size_t line, const std::string& what) const {
-        throw std::runtime_error(source_ + ": line " + std::to_string(line) + ", " + what);
-    }
-    [[noreturn]] void fail_file(const std::string& what) const {
-        throw std::runtime_error(source_ + ": " + what);
-    }
+    using CsvErrors::CsvErrors;
 
     // The header's column index of each of the four names.
     std::array<std::size_t, 4> header(std::string_view line) const {
@@ -90,9 +83,6 @@ public:
                                 "or mV s)"));
         return v;
     }
-
-private:
-    const std::string& source_;
 };
 
 } // namespace

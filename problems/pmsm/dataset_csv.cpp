@@ -27,26 +27,12 @@ constexpr std::array<std::string_view, 7> column_names = {"t", "ud", "uq", "id",
 constexpr std::size_t injected_column = 6;
 static_assert(max_dataset_magnitude == 1e9, "the messages below say [-1e9, 1e9]");
 
-class ErrorContext {
-public:
-    explicit ErrorContext(const std::string& source) : source_(source) {}
-    [[noreturn]] void fail(std::size_t line, const std::string& what) const {
-        throw std::runtime_error(source_ + ": line " + std::to_string(line) + ", " + what);
-    }
-    [[noreturn]] void fail_file(const std::string& what) const {
-        throw std::runtime_error(source_ + ": " + what);
-    }
-
-private:
-    const std::string& source_;
-};
-
 std::string column_label(std::string_view name) {
     return "column '" + std::string(name) + "'";
 }
 
 // A finite number within +-max_dataset_magnitude, or a one-line reason why not.
-double parse_cell(std::string_view text, std::size_t line, std::string_view column, const ErrorContext& ctx) {
+double parse_cell(std::string_view text, std::size_t line, std::string_view column, const CsvErrors& ctx) {
     double v = 0;
     if (parse_real(text, v)) {
         if (std::fabs(v) > max_dataset_magnitude)
@@ -73,7 +59,7 @@ double parse_cell(std::string_view text, std::size_t line, std::string_view colu
 } // namespace
 
 Dataset read_dataset_csv(std::istream& in, const std::string& source, const DatasetReadOptions& options) {
-    const ErrorContext ctx(source);
+    const CsvErrors ctx(source);
     Dataset data;
     std::string line;
     std::size_t line_number = 0;
