@@ -5,15 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "problems/core/rng.hpp"
 
 namespace mhb::fluxmap {
-namespace {
 
-// Central differences in the scaled coordinates: column j is dr/dz_j, z_j = (theta_j - lo_j) / w_j.
 // The step is kept inside the box so that no power of a negative exponent is taken.
-Eigen::MatrixXd jacobian(const CurrentMap& map, const Box& box, const Eigen::VectorXd& theta) {
+Eigen::MatrixXd scaled_jacobian(const CurrentMap& map, const Box& box, const Eigen::VectorXd& theta) {
     const Eigen::Index n = theta.size();
     Eigen::VectorXd plus, minus;
     Eigen::MatrixXd j(2 * map.points(), n);
@@ -30,7 +29,17 @@ Eigen::MatrixXd jacobian(const CurrentMap& map, const Box& box, const Eigen::Vec
     return j;
 }
 
-} // namespace
+std::vector<Eigen::VectorXd> multistart_points(const Box& box, int starts, std::uint64_t seed) {
+    Rng rng(seed);
+    std::vector<Eigen::VectorXd> points;
+    for (int s = 0; s < starts; ++s) {
+        Eigen::VectorXd start(box.dimension());
+        for (Eigen::Index c = 0; c < start.size(); ++c)
+            start[c] = rng.uniform(box.lower[c], box.upper[c]);
+        points.push_back(std::move(start));
+    }
+    return points;
+}
 
 int FitResult::reached(double relative) const {
     return static_cast<int>(std::count_if(start_f.begin(), start_f.end(),
@@ -46,7 +55,7 @@ FitResult fit_from(const CurrentMap& map, const Box& box, const Eigen::VectorXd&
     double mu = 1e-3;
     int stalled = 0;
     for (int it = 0; it < max_iterations && stalled < 10 && mu < 1e20; ++it) {
-        const Eigen::MatrixXd j = jacobian(map, box, theta);
+        const Eigen::MatrixXd j = scaled_jacobian(map, box, theta);
         const Eigen::MatrixXd jtj = j.transpose() * j;
         const Eigen::VectorXd g = j.transpose() * r;
         // Free coordinates: not held at a bound by a gradient that points out of the box.
@@ -93,13 +102,9 @@ FitResult fit_from(const CurrentMap& map, const Box& box, const Eigen::VectorXd&
 }
 
 FitResult fit_multistart(const CurrentMap& map, const Box& box, const FitOptions& options) {
-    Rng rng(options.seed);
     FitResult best;
     best.f = std::numeric_limits<double>::infinity();
-    for (int s = 0; s < options.starts; ++s) {
-        Eigen::VectorXd start(box.dimension());
-        for (Eigen::Index c = 0; c < start.size(); ++c)
-            start[c] = rng.uniform(box.lower[c], box.upper[c]);
+    for (const Eigen::VectorXd& start : multistart_points(box, options.starts, options.seed)) {
         const FitResult one = fit_from(map, box, start, options.max_iterations);
         best.start_f.push_back(one.f);
         if (one.f < best.f)

@@ -34,6 +34,12 @@ struct FitResult {
     [[nodiscard]] int reached(double relative) const;
 };
 
+// Central differences in coordinates scaled by the box: column j is dr/dz_j with
+// z_j = (theta_j - lower_j) / (upper_j - lower_j); a step never leaves the box. Divide column j by the
+// box's width j for dr/dtheta_j.
+Eigen::MatrixXd scaled_jacobian(const CurrentMap& map, const Box& box, const Eigen::VectorXd& theta);
+// The starts of fit_multistart, in its order: `lower + u (upper - lower)`, u drawn by Rng(seed).
+std::vector<Eigen::VectorXd> multistart_points(const Box& box, int starts, std::uint64_t seed);
 // One bounded LM descent from `start` (inside `box`).
 FitResult fit_from(const CurrentMap& map, const Box& box, const Eigen::VectorXd& start, int max_iterations);
 // The multi-start fit: starts drawn by Rng(options.seed), `box.lower + u (box.upper - box.lower)`.

@@ -5,6 +5,9 @@
 // residuals (RMS, maximum, lag-1 autocorrelation, which flags model error), the condition of the
 // problem and, when the file carries the true values, the errors.
 //
+// With --flux-map FILE it identifies a machine's magnetic saturation from a measured flux map
+// instead (identify_flux_map.hpp).
+//
 // Models: steady (eq. 11 of Li, Wang and Ji 2017) and dynamic (discrete dq voltage equations
 // with di/dt) are linear in the parameters and solved exactly; output (output error) is not, so
 // an optimiser is run from several seeds and their spread is reported besides the linearised
@@ -12,6 +15,7 @@
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -28,6 +32,7 @@
 #include "problems/pmsm/steady_state_data.hpp"
 #include "problems/problem_registry.hpp"
 #include "runner/cli/command.hpp"
+#include "runner/cli/identify_flux_map.hpp"
 #include "runner/cli/identify_report.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/single_problem/output_error_search.hpp"
@@ -131,6 +136,7 @@ struct Options {
     std::string substeps = "2";
     OutputIdentificationOptions output;
     std::string seeds = "8", evaluations = "20000", threads = "0";
+    std::string flux_map, bounds, starts = "100", seed = "1", out;
 };
 
 po::options_description make_identify_options(Options& o) {
@@ -149,7 +155,15 @@ po::options_description make_identify_options(Options& o) {
         "The dataset CSV: optional '# key=value' lines (Rs, Ld, Lq, psi give true values), then the header\n"
         "t,ud,uq,id,iq,omega[,injected] in s, V, V, A, A, electrical rad/s. Several files joined by '+' are\n"
         "fitted jointly (several operating conditions, one motor).\n\n"
-        "Usage: mhbench identify --data FILE[+FILE...] [--model steady|dynamic|output] [options]\n\nOptions");
+        "With --flux-map FILE: the machine's magnetic saturation from a measured flux map (CSV columns\n"
+        "i_d,i_q,psi_d,psi_q in A and V s; 'shipped' names the Baldor PM-SyRM map shipped with mhbench):\n"
+        "--model pmsyrm (Lelli et al. 2024, 14 parameters; the default) or syrm (Hinkkanen et al. 2017, 9)\n"
+        "fitted by a bounded Levenberg-Marquardt method from --starts random starts, with standard errors,\n"
+        "verdicts, the current errors and a residual map; --out DIR adds CSVs and a figure of psi_d(i_d)\n"
+        "and psi_q(i_q). The fit minimises the fluxmap problem of mhbench run (see mhbench list fluxmap).\n\n"
+        "Usage: mhbench identify --data FILE[+FILE...] [--model steady|dynamic|output] [options]\n"
+        "       mhbench identify --flux-map FILE|shipped [--model pmsyrm|syrm] [--out DIR] "
+        "[options]\n\nOptions");
     // clang-format off
     options.add_options()
         ("help,h", "this text")
@@ -172,7 +186,16 @@ po::options_description make_identify_options(Options& o) {
         ("seeds", po::value<std::string>(&o.seeds)->default_value(o.seeds), "output: independent runs")
         ("evaluations", po::value<std::string>(&o.evaluations)->default_value(o.evaluations),
          "output: evaluations per run")
-        ("threads", po::value<std::string>(&o.threads)->default_value(o.threads), "output: threads (0: all cores)");
+        ("threads", po::value<std::string>(&o.threads)->default_value(o.threads),
+         "output, flux map: threads (0: all cores)")
+        ("flux-map", po::value<std::string>(&o.flux_map), "a flux-map CSV, or 'shipped' (instead of --data)")
+        ("starts", po::value<std::string>(&o.starts)->default_value(o.starts),
+         "flux map: Levenberg-Marquardt starts drawn uniformly from the box")
+        ("seed", po::value<std::string>(&o.seed)->default_value(o.seed), "flux map: seed of the starts")
+        ("bounds", po::value<std::string>(&o.bounds),
+         "flux map: search bounds as in the fluxmap problem, e.g. 'a_d0=0:2000,S=1:8'")
+        ("out", po::value<std::string>(&o.out),
+         "flux map: a directory for estimates.csv, points.csv, curves.csv and the figure flux-map.pdf");
     // clang-format on
     return options;
 }
@@ -210,6 +233,34 @@ Settings check_settings(Options& o, const po::variables_map& vm) {
     if (s.kind == pmsm::ModelKind::steady && (o.fit_vdt || vm["smooth"].defaulted() == false))
         throw std::invalid_argument("--fit-vdt and --smooth apply to --model dynamic or output");
     return s;
+}
+
+// The options of a flux-map identification, checked.
+FluxMapIdentifyOptions flux_map_settings(const Options& o, const po::variables_map& vm) {
+    if (vm.count("data") != 0)
+        throw std::invalid_argument(
+            "--data (a PMSM dataset) and --flux-map are two identifications; give one");
+    for (const char* pmsm_only :
+         {"weights", "id-threshold", "settle", "smooth", "substeps", "algorithm", "seeds", "evaluations"})
+        if (vm.count(pmsm_only) != 0 && !vm[pmsm_only].defaulted())
+            throw std::invalid_argument(std::string("--") + pmsm_only +
+                                        " applies to a PMSM dataset (--data), not to --flux-map");
+    if (o.fit_vdt)
+        throw std::invalid_argument("--fit-vdt applies to a PMSM dataset (--data), not to --flux-map");
+    FluxMapIdentifyOptions f;
+    f.map = o.flux_map;
+    if (f.map.empty())
+        throw std::invalid_argument("--flux-map needs a CSV file, or 'shipped' for the Baldor map");
+    f.model = vm["model"].defaulted() ? "pmsyrm" : o.model;
+    if (f.model != "pmsyrm" && f.model != "syrm")
+        throw std::invalid_argument("--model = " + value_excerpt(f.model) +
+                                    " is not a flux-map model; with --flux-map give pmsyrm or syrm");
+    f.bounds = o.bounds;
+    f.starts = static_cast<int>(integer_argument(o.starts, "starts", 1, 100000));
+    f.seed = static_cast<std::uint64_t>(integer_argument(o.seed, "seed", 0, 9007199254740992LL));
+    f.threads = static_cast<int>(integer_argument(o.threads, "threads", 0, 4096));
+    f.out = o.out;
+    return f;
 }
 
 // The same data as a `pmsm` problem of `mhbench run`: its search box and its warnings.
@@ -293,6 +344,11 @@ int run_identify_command(const std::vector<std::string>& args) {
     po::variables_map vm;
     if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
         return exit_ok;
+    if (vm.count("flux-map") != 0)
+        return identify_flux_map(flux_map_settings(o, vm));
+    for (const char* flux_only : {"starts", "seed", "bounds", "out"})
+        if (!vm[flux_only].defaulted() && vm.count(flux_only) != 0)
+            throw std::invalid_argument(std::string("--") + flux_only + " applies to --flux-map only");
     const Settings settings = check_settings(o, vm);
 
     const pmsm::PmsmSources data = pmsm::read_sources(o.data, settings.read_options);

@@ -6,19 +6,14 @@
 #include <utility>
 
 #include "problems/pmsm/segments.hpp"
+#include "runner/cli/formatted.hpp"
 
 namespace mhb::cli {
 namespace {
 
-std::string format(const char* f, double a, double b = 0, double c = 0) {
-    char buf[240];
-    std::snprintf(buf, sizeof buf, f, a, b, c);
-    return buf;
-}
-
 // A percentage, or "n/a" (same width) where it has no value.
 std::string percent_text(double value, const char* f) {
-    return std::isfinite(value) ? format(f, value) : std::string("      n/a  ");
+    return std::isfinite(value) ? formatted(f, value) : std::string("      n/a  ");
 }
 
 } // namespace
@@ -32,7 +27,7 @@ void print_data_summary(std::ostream& out, const pmsm::PmsmSources& data) {
         try {
             const double Ts = pmsm::sampling_period(d, data.names[i]);
             const auto stretches = pmsm::contiguous_segments(d, Ts).size();
-            out << ", Ts = " << format("%.6g", Ts) << " s, " << stretches
+            out << ", Ts = " << formatted("%.6g", Ts) << " s, " << stretches
                 << (stretches == 1 ? " stretch" : " stretches");
         } catch (const std::invalid_argument&) {
             out << ", no time step";
@@ -60,8 +55,8 @@ void print_estimates(std::ostream& out, const IdentifyReport& r) {
         const bool determined = fit.determined[static_cast<std::size_t>(j)];
         std::snprintf(buf, sizeof buf, "%-3s %s   %-14s  %-14s  ",
                       model.parameter_names[static_cast<std::size_t>(j)].c_str(), units[j],
-                      determined ? format("%.8g", estimate[j]).c_str() : "n/a",
-                      std::isfinite(fit.standard_error[j]) ? format("%.4g", fit.standard_error[j]).c_str()
+                      determined ? formatted("%.8g", estimate[j]).c_str() : "n/a",
+                      std::isfinite(fit.standard_error[j]) ? formatted("%.4g", fit.standard_error[j]).c_str()
                                                            : "n/a");
         out << buf << percent_text(relative, "%9.3g %%");
         if (r.id.output) {
@@ -84,30 +79,30 @@ void print_fit(std::ostream& out, const IdentifyReport& r) {
     const pmsm::LinearFit& fit = r.fit;
     const double volts_per_unit = r.id.volts_per_unit;
     if (r.kind == pmsm::ModelKind::steady)
-        out << format("f* (eq. 11 at the estimate) = %.10g\n", fit.f);
+        out << formatted("f* (eq. 11 at the estimate) = %.10g\n", fit.f);
     else if (r.kind == pmsm::ModelKind::dynamic)
-        out << format("f* (sum of 0.25 (r_d^2 + r_q^2) at the estimate) = %.10g\n", fit.f);
+        out << formatted("f* (sum of 0.25 (r_d^2 + r_q^2) at the estimate) = %.10g\n", fit.f);
     else
-        out << format(
+        out << formatted(
             "f (sum of squared current errors at the estimate) = %.10g A^2; %.0f of %.0f seeds reached it "
             "(to 1e-6 relative)\n",
             r.id.output->best_f, r.id.output->seeds_at_best, static_cast<double>(r.id.output->seed_f.size()));
     for (const auto& [axis, stats] : {std::pair{"d", &fit.residual_d}, std::pair{"q", &fit.residual_q}})
-        out << "residuals, " << axis << " axis: RMS " << format("%.4g ", stats->rms * volts_per_unit)
-            << r.unit << format(", max %.4g ", stats->max_abs * volts_per_unit) << r.unit
+        out << "residuals, " << axis << " axis: RMS " << formatted("%.4g ", stats->rms * volts_per_unit)
+            << r.unit << formatted(", max %.4g ", stats->max_abs * volts_per_unit) << r.unit
             << ", lag-1 autocorrelation "
-            << (std::isfinite(stats->lag1) ? format("%.3f", stats->lag1) : std::string("n/a")) << '\n';
+            << (std::isfinite(stats->lag1) ? formatted("%.3f", stats->lag1) : std::string("n/a")) << '\n';
     const Eigen::Index k = r.id.model.parameters();
-    out << format("%.0f equations, %.0f parameters; condition number ",
+    out << formatted("%.0f equations, %.0f parameters; condition number ",
                   static_cast<double>(r.id.model.equations()), static_cast<double>(k))
-        << (std::isfinite(fit.condition_number) ? format("%.4g", fit.condition_number)
+        << (std::isfinite(fit.condition_number) ? formatted("%.4g", fit.condition_number)
                                                 : std::string("infinite"))
         << " (columns scaled to unit norm)\n";
     if (fit.covariance.allFinite() && k >= 4) {
         const double correlation =
             fit.covariance(0, 3) / std::sqrt(fit.covariance(0, 0) * fit.covariance(3, 3));
         if (std::isfinite(correlation))
-            out << format("correlation of the Rs and psi estimates: %.3f\n", correlation);
+            out << formatted("correlation of the Rs and psi estimates: %.3f\n", correlation);
     }
 }
 
@@ -120,8 +115,8 @@ void print_verdicts(std::ostream& out, const IdentifyReport& r, const pmsm::Iden
     for (const pmsm::ParameterJudgement& p : judged.parameters) {
         out << "  " << p.name << ": " << pmsm::to_string(p.verdict) << " (" << p.reason << ")";
         if (std::isfinite(p.signal_rms) && residual_rms > 0)
-            out << format("; its term is %.3g ", p.signal_rms * r.id.volts_per_unit) << r.unit
-                << format(" RMS in the equations, %.3g times the residual RMS", p.signal_rms / residual_rms);
+            out << formatted("; its term is %.3g ", p.signal_rms * r.id.volts_per_unit) << r.unit
+                << formatted(" RMS in the equations, %.3g times the residual RMS", p.signal_rms / residual_rms);
         out << '\n';
         if (!p.advice.empty())
             out << "    to determine it: " << p.advice << '\n';

@@ -344,6 +344,26 @@ std::vector<BadInputCase> catalogue() {
          stderr_says({"mhbench run: fluxmap: parameter 'truth' = 1/2/3 has 3 values; model=pmsyrm has 14 parameters, "
                       "written v1/v2/..."})},
 
+        // ---- identify --flux-map: a measured flux map instead of a PMSM dataset
+        {"", "identify --flux-map none.csv", 1,
+         stderr_says({"mhbench identify: none.csv: cannot be opened (No such file or directory)"})},
+        {"printf 'i_d,i_q,psi_d,psi_q\\n1,2,0.1,nan\\n' > m.csv", "identify --flux-map m.csv", 1,
+         stderr_says({"mhbench identify: m.csv: line 2, column 'psi_q': 'nan' is not finite (NaN or infinity)"})},
+        {"", "identify --flux-map shipped --model steady", 2,
+         stderr_says({"mhbench identify: --model = steady is not a flux-map model; with --flux-map give pmsyrm or syrm"})},
+        {"", "identify --flux-map shipped --data d.csv", 2,
+         stderr_says({"mhbench identify: --data (a PMSM dataset) and --flux-map are two identifications; give one"})},
+        {"", "identify --data d.csv --out o", 2, stderr_says({"mhbench identify: --out applies to --flux-map only"})},
+        {"", "identify --flux-map shipped --starts 0", 2,
+         stderr_says({"mhbench identify: --starts = 0 is outside [1, 100000]"})},
+        {"", "identify --flux-map shipped --bounds S=3:2", 2,
+         stderr_says({"mhbench identify: fluxmap: parameter 'S' = 3:2 needs lo < hi"})},
+        {"", "identify --flux-map shipped --model syrm --bounds W=1:2", 2,
+         stderr_says({"mhbench identify: --bounds 'W=1:2': 'W' is not a parameter of model=syrm (a_d0 a_dd a_q0 "
+                      "a_qq a_dq S T U V)"})},
+        {"touch o", "identify --flux-map shipped --starts 1 --out o", 1,
+         stderr_says({"mhbench identify: --out o: is a file, not a directory"})},
+
         // ---- eval and points files
         {"", "eval --problem sphere:dim=2", 2, one_line("--points")},
         {"", "eval --problem nope --points p.txt", 2, one_line("mhbench eval: unknown problem 'nope'; known: ")},

@@ -3,6 +3,7 @@
 // shipped map and on a user's file, and `mhbench plugin-check` finds the family fit for a study.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
@@ -99,6 +100,67 @@ TEST(FluxMapCli, PluginCheckPasses) {
         const CliResult r = run_mhbench(std::string("plugin-check --problem ") + spec);
         EXPECT_EQ(r.exit_code, 0) << spec << "\n" << r.out << r.err;
         EXPECT_NE(r.out.find("verdict: pass"), std::string::npos) << spec << "\n" << r.out;
+    }
+}
+
+// `identify --flux-map`: the same report at any thread count, the shipped optimum re-found, a
+// verdict per parameter, and a user's file with its columns in another order fitted the same.
+TEST(FluxMapCli, IdentifyFindsTheShippedOptimumAtAnyThreadCount) {
+    const CliResult one = run_mhbench("identify --flux-map shipped --starts 3 --threads 1");
+    const CliResult two = run_mhbench("identify --flux-map shipped --starts 3 --threads 2");
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    EXPECT_EQ(one.out, two.out);
+    EXPECT_NE(one.out.find("fit:  f = 36.0995588759 A^2"), std::string::npos) << one.out;
+    EXPECT_NE(one.out.find("3 of 3 starts reached it"), std::string::npos) << one.out;
+    int verdicts = 0;
+    for (const std::string& line : lines_of(one.out))
+        verdicts += line.rfind("  ", 0) == 0 && line.find(" determined (") != std::string::npos ? 1 : 0;
+    EXPECT_EQ(verdicts, 14) << one.out;
+}
+
+TEST(FluxMapCli, IdentifyWritesItsNumbersAndTheyAgreeWithTheReport) {
+    const auto shipped = flux_cli_points(std::string(MHB_SOURCE_DIR) +
+                                         "/problems/fluxmap/data/baldor-ecs101m0h7ef4-400rpm.csv");
+    const auto file = fresh("fluxmap_identify.csv");
+    std::ofstream out(file);
+    out.precision(17);
+    out << "psi_q,psi_d,i_q,i_d\n";
+    for (const FluxCliPoint& p : shipped)
+        out << p.psi_q << ',' << p.psi_d << ',' << p.i_q << ',' << p.i_d << '\n';
+    out.close();
+    const auto dir = fresh("fluxmap_identify_out");
+    const CliResult r = run_mhbench("identify --flux-map " + shell_quoted(file) +
+                                    " --model syrm --starts 2 --out " + shell_quoted(dir));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("SyRM current map (Hinkkanen et al. 2017, 9 parameters)"), std::string::npos)
+        << r.out;
+    const auto estimates = lines_of(run_shell("cat " + shell_quoted(dir / "estimates.csv")).out);
+    ASSERT_EQ(estimates.size(), 10u);
+    EXPECT_EQ(estimates[0],
+              "parameter,estimate,standard_error,relative_error,spread_over_starts,verdict,lower,upper");
+    EXPECT_EQ(estimates[1].substr(0, 5), "a_d0,");
+    // points.csv: every point with the model's currents; its errors add up to the printed f.
+    std::ifstream points(dir / "points.csv");
+    std::string line;
+    std::getline(points, line);
+    EXPECT_EQ(line, "i_d,i_q,psi_d,psi_q,i_d_model,i_q_model,error_d,error_q");
+    double f = 0;
+    int rows = 0;
+    for (; std::getline(points, line); ++rows) {
+        std::replace(line.begin(), line.end(), ',', ' ');
+        std::istringstream cells(line);
+        std::vector<double> v(8);
+        for (double& x : v)
+            cells >> x;
+        f += v[6] * v[6] + v[7] * v[7];
+    }
+    EXPECT_EQ(rows, 567);
+    const auto at = r.out.find("fit:  f = ");
+    ASSERT_NE(at, std::string::npos);
+    EXPECT_NEAR(std::stod(r.out.substr(at + 10)), f, 1e-9 * f);
+    EXPECT_EQ(lines_of(run_shell("cat " + shell_quoted(dir / "curves.csv")).out).size(), 1u + 10u * 121u);
+    if (r.out.find("figure: ") != std::string::npos) { // drawn when a Python with matplotlib is found
+        EXPECT_TRUE(std::filesystem::exists(dir / "flux-map.svg"));
     }
 }
 
