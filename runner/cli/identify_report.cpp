@@ -94,7 +94,7 @@ void print_fit(std::ostream& out, const IdentifyReport& r) {
             << (std::isfinite(stats->lag1) ? formatted("%.3f", stats->lag1) : std::string("n/a")) << '\n';
     const Eigen::Index k = r.id.model.parameters();
     out << formatted("%.0f equations, %.0f parameters; condition number ",
-                  static_cast<double>(r.id.model.equations()), static_cast<double>(k))
+                     static_cast<double>(r.id.model.equations()), static_cast<double>(k))
         << (std::isfinite(fit.condition_number) ? formatted("%.4g", fit.condition_number)
                                                 : std::string("infinite"))
         << " (columns scaled to unit norm)\n";
@@ -116,7 +116,8 @@ void print_verdicts(std::ostream& out, const IdentifyReport& r, const pmsm::Iden
         out << "  " << p.name << ": " << pmsm::to_string(p.verdict) << " (" << p.reason << ")";
         if (std::isfinite(p.signal_rms) && residual_rms > 0)
             out << formatted("; its term is %.3g ", p.signal_rms * r.id.volts_per_unit) << r.unit
-                << formatted(" RMS in the equations, %.3g times the residual RMS", p.signal_rms / residual_rms);
+                << formatted(" RMS in the equations, %.3g times the residual RMS",
+                             p.signal_rms / residual_rms);
         out << '\n';
         if (!p.advice.empty())
             out << "    to determine it: " << p.advice << '\n';
