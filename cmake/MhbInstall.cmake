@@ -3,6 +3,9 @@
 #   lib/cmake/mhbench/             mhbenchConfig.cmake, its version file, the exported targets
 #                                  and mhbench_add_plugin() (mhbenchPlugin.cmake)
 #   bin/mhbench                    the executable the modules are loaded into
+#   share/mhbench/scripts/         the figure scripts it runs (runner/execution/companion_files.hpp)
+#   share/mhbench/studies/         the preset study files, as text to copy (they are compiled in)
+#   share/mhbench/data/fluxmap/    the licence and provenance of the flux map compiled in
 # mhbench::mhbench is headers only: a plug-in's calls into mhbench (Objective::evaluate, Rng,
 # parameters) are resolved from the executable when it loads the module, so that the one copy of
 # each function the runs use is mhbench's own (cmake/MhbPluginSymbols.cmake lists them).
@@ -49,3 +52,13 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/mhbenchConfigVersion.cmak
 install(FILES ${PROJECT_BINARY_DIR}/mhbenchConfig.cmake ${PROJECT_BINARY_DIR}/mhbenchConfigVersion.cmake
     ${PROJECT_SOURCE_DIR}/cmake/mhbenchPlugin.cmake ${PROJECT_SOURCE_DIR}/cmake/mhbenchContract.cmake
     ${PROJECT_SOURCE_DIR}/cmake/mhbenchContractHeaders.cmake DESTINATION ${mhb_cmake_dir})
+
+# What the executable needs or owes beside itself: the figure scripts it runs, found relative to it;
+# the presets as files to start a study file from; the licence that travels with the shipped map.
+foreach(script IN LISTS MHB_COMPANION_SCRIPTS)
+    install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/${script} DESTINATION ${CMAKE_INSTALL_DATADIR}/mhbench/scripts)
+endforeach()
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/scripts/studies/ DESTINATION ${CMAKE_INSTALL_DATADIR}/mhbench/studies
+    FILES_MATCHING PATTERN "*.ini")
+install(FILES ${PROJECT_SOURCE_DIR}/problems/fluxmap/data/LICENSE-motulator
+    ${PROJECT_SOURCE_DIR}/problems/fluxmap/data/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/mhbench/data/fluxmap)

@@ -55,8 +55,8 @@ Figures draw_figures(const ReportOptions& options, const fs::path& out_dir, std:
         return Figures::interrupted;
     const std::string how =
         "install matplotlib (apt install python3-matplotlib) and run mhbench report again, or "
-        "run scripts/plot_study.py " +
-        out_dir.string();
+        "run " +
+        options.plot_script.string() + " " + out_dir.string();
     if (options.plot_script.empty() || !fs::exists(options.plot_script)) {
         console << "figures skipped: the plotting script " << options.plot_script.string()
                 << " was not found; the tables and curve data are written\n";

@@ -10,6 +10,7 @@
 #include "results/report/child_process.hpp"
 #include "results/report/report.hpp"
 #include "results/store/csv.hpp"
+#include "runner/execution/companion_files.hpp"
 
 namespace mhb::cli {
 namespace fs = std::filesystem;
@@ -61,7 +62,7 @@ std::string curves_csv(const FluxMapReport& r) {
 }
 
 void draw_figure(const fs::path& dir, const FluxMapReport& r, std::ostream& console) {
-    const auto python = find_matplotlib_python({"/usr/bin/python3", "python3"});
+    const auto python = find_matplotlib_python(ReportOptions().python_candidates);
     if (!python) {
         console << "figure skipped: no Python with matplotlib found (apt install python3-matplotlib); the "
                    "curves are in curves.csv\n";
@@ -69,7 +70,12 @@ void draw_figure(const fs::path& dir, const FluxMapReport& r, std::ostream& cons
     }
     const std::string title = std::string(r.map.model() == fluxmap::Model::pmsyrm ? "PM-SyRM" : "SyRM") +
                               " fitted to " + fs::path(r.map_name).filename().string();
-    const fs::path script = fs::path(MHB_SOURCE_DIR) / "scripts" / "plot_flux_map.py";
+    const fs::path script = companion_file("scripts/plot_flux_map.py");
+    if (!fs::exists(script)) {
+        console << "figure skipped: the plotting script " << script.string()
+                << " was not found (an incomplete installation); the curves are in curves.csv\n";
+        return;
+    }
     const ChildOutcome run = run_child_process(*python, {script.string(), dir.string(), title}, true);
     if (run.exited_with(0)) {
         console << "figure: " << (dir / "flux-map.pdf").string() << " (and .png, .svg)\n";

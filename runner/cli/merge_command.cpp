@@ -16,6 +16,7 @@
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/distribution/shards.hpp"
+#include "runner/execution/companion_files.hpp"
 #include "runner/execution/context.hpp"
 #include "runner/execution/data_provenance.hpp"
 #include "runner/execution/parallel_runner.hpp"
@@ -276,7 +277,7 @@ int run_merge_command(const std::vector<std::string>& args) {
         return exit_ok;
     ReportOptions report;
     report.figures = !vm["no-figures"].as<bool>();
-    report.plot_script = fs::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
+    report.plot_script = companion_file("scripts/plot_study.py");
     std::ostringstream discarded;
     return build_report(load_study(out), report, quiet ? discarded : std::cout).interrupted ? exit_interrupted
                                                                                             : exit_ok;

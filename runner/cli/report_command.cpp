@@ -17,6 +17,7 @@
 #include "results/store/store.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
+#include "runner/execution/companion_files.hpp"
 #include "runner/execution/study_lock.hpp"
 
 namespace mhb::cli {
@@ -161,7 +162,7 @@ ReportOptions report_options_of(const ReportCommandLine& given, const po::variab
         if (first != std::string::npos) // "md, tex" is meant as "md,tex"
             options.formats.insert(f.substr(first, f.find_last_not_of(' ') - first + 1));
     }
-    options.plot_script = std::filesystem::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
+    options.plot_script = companion_file("scripts/plot_study.py");
     return options;
 }
 

@@ -26,6 +26,7 @@
 #include "runner/cli/run_options.hpp"
 #include "runner/distribution/distributed.hpp"
 #include "runner/distribution/shards.hpp"
+#include "runner/execution/companion_files.hpp"
 #include "runner/execution/context.hpp"
 #include "runner/execution/parallel_runner.hpp"
 #include "runner/execution/progress.hpp"
@@ -290,7 +291,7 @@ TimedOutcome run_with_progress(const PreparedStudy& prepared, StudyWriter& write
 int build_study_report(const std::filesystem::path& dir, const po::variables_map& vm, bool quiet) {
     ReportOptions report;
     report.figures = !vm["no-figures"].as<bool>();
-    report.plot_script = std::filesystem::path(MHB_SOURCE_DIR) / "scripts" / "plot_study.py";
+    report.plot_script = companion_file("scripts/plot_study.py");
     report.stop = &stop_requested; // a Ctrl-C during the tables starts no figure
     std::ostringstream discarded;
     if (!quiet)
