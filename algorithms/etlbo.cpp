@@ -9,7 +9,7 @@
 //   5. duplicates are removed: a learner equal to an earlier one gets one randomly chosen
 //      coordinate redrawn uniformly in the box and is re-evaluated (Rao and Patel's mutation).
 // The teacher and the mean are taken at the start of the teacher phase; learners are updated in
-// place in index order (as DESIGN.md reads TLBO). r is uniform per coordinate.
+// place in index order (as ARCHITECTURE.md section 9 reads TLBO). r is uniform per coordinate.
 // Defaults: NP = 50 (the ITLBO paper's population, for comparisons at equal NP); elite = 4 (one of
 // the elite sizes Rao and Patel tested, 4 to 16).
 // Bounds: the Objective clamps, as in the ITLBO paper.

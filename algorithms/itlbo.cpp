@@ -35,7 +35,7 @@
 // + the number of mutations (about p NP). All on, that is about NP (D + 1.1): 275 for the
 // paper's NP = 50, D = 4, against PSO's 50.
 //
-// Reading of the paper's loops (as DESIGN.md section 4 asks): learners are updated in place in
+// Reading of the paper's loops (as ARCHITECTURE.md section 9 asks): learners are updated in place in
 // index order, so the partner j, Mean and the teacher are read as the class is at that moment.
 // The teacher is the current best learner (lowest index among equals); Mean comes from a
 // running sum updated at every replacement and recomputed exactly at the start of every

@@ -15,7 +15,7 @@
 //     of the box in the first iterations). From zero velocity the first move of each particle
 //     is towards the global best only;
 //   - positions are clamped to the box (the Objective's clamp policy, "clamp to bounds" in
-//     DESIGN.md); the velocity is left as it is;
+//     ARCHITECTURE.md section 9); the velocity is left as it is;
 //   - no velocity clamp by default (vmax = 0); vmax > 0 limits each velocity component to
 //     vmax times the box's width in that coordinate;
 //   - synchronous global best: gbest is updated once per iteration, after every particle has

@@ -1,7 +1,7 @@
 // TLBO, teaching-learning-based optimisation: R. V. Rao, V. J. Savsani, D. P. Vakharia (2011),
 // "Teaching-learning-based optimization: A novel method for constrained mechanical design
 // optimization problems", Computer-Aided Design 43(3):303-315. Written as eqs. 5-7 of Li, Wang,
-// Ji (2017) restate it, read the way DESIGN.md section 4 asks.
+// Ji (2017) restate it, read the way ARCHITECTURE.md section 9 asks.
 //
 // One iteration:
 //   teacher phase, each learner i in index order: TF = round(1 + rand) in {1, 2};
@@ -18,7 +18,7 @@
 //
 // The learning factor r, parameter `r`:
 //   coordinate (default)  one uniform draw per coordinate: the step is diag(r_1..r_D) times the
-//                         direction. DESIGN.md section 4; every result before `r` existed.
+//                         direction. ARCHITECTURE.md section 9; every result before `r` existed.
 //   learner               one uniform draw per learner and step, used for every coordinate.
 // What the papers write. Li, Wang, Ji (2017) put a scalar "rand" in eq. 6 and say of eq. 7
 // "r_i = rand(0,1) is the learning factor of the i-th learner": one per learner, so `learner`

@@ -1,5 +1,5 @@
-// Reading and writing the PMSM dataset CSV (DESIGN 5): optional `# key=value` metadata lines, the
-// header `t,ud,uq,id,iq,omega` (any order) with an optional `injected` column (0/1), then one row
+// Reading and writing the PMSM dataset CSV (ARCHITECTURE.md section 10): optional `# key=value` metadata
+// lines, the header `t,ud,uq,id,iq,omega` (any order) with an optional `injected` column (0/1), then one row
 // per sample in s, V, V, A, A, electrical rad/s. Without `injected`, a sample counts as injected
 // when |id| exceeds a threshold (default 1 A, half the paper's -2 A injection).
 //

@@ -1,8 +1,9 @@
 // A simulator of a PMSM drive (the paper's motor by default, any motor by its parameters): the PMSM in the
-// rotor dq frame (DESIGN 5) with its mechanics, under field-oriented control - a speed PI loop giving the
-// q-current reference, d and q current PI loops with decoupling feed-forward, and the DC-bus voltage limit -
-// sampled and held every control period Ts = 100 us. It produces the datasets the identification problems are
-// built from: settled plateaus for the steady-state model, a step transient for the dynamic ones.
+// rotor dq frame (ARCHITECTURE.md section 10) with its mechanics, under field-oriented control - a speed PI
+// loop giving the q-current reference, d and q current PI loops with decoupling feed-forward, and the DC-bus
+// voltage limit - sampled and held every control period Ts = 100 us. It produces the datasets the
+// identification problems are built from: settled plateaus for the steady-state model, a step transient for
+// the dynamic ones.
 //
 // Discretisation. The controller runs once per period; the voltage it computes is held constant
 // in the dq frame over [t_k, t_k + Ts) (an ideal average inverter with a zero-order hold); the
@@ -41,8 +42,8 @@
 
 namespace mhb::pmsm {
 
-// PI gains by pole-zero cancellation (DESIGN 5): current loops Kp = wc L, Ki = wc Rs; speed loop
-// Kp_w = ws J / Kt, Ki_w = Kp_w ws / 3, acting on the mechanical speed error (rad/s) to give iq*.
+// PI gains by pole-zero cancellation (ARCHITECTURE.md section 10): current loops Kp = wc L, Ki = wc Rs; speed
+// loop Kp_w = ws J / Kt, Ki_w = Kp_w ws / 3, acting on the mechanical speed error (rad/s) to give iq*.
 struct ControllerGains {
     double kp_d = 0, ki_d = 0, kp_q = 0, ki_q = 0; // V/A, V/(A s)
     double kp_w = 0, ki_w = 0;                     // A s/rad, A/rad
@@ -59,7 +60,8 @@ struct SimulatorConfig {
     OperatingCondition condition;
     double current_bandwidth = 3000.0; // wc, rad/s
     double speed_bandwidth = 800.0;    // ws, rad/s
-    double iq_max = 18.0;            // A, limit of the q-current reference (not the rated 4 A, see DESIGN 5)
+    // A, limit of the q-current reference (not the rated 4 A, see ARCHITECTURE.md section 10)
+    double iq_max = 18.0;
     double vdc = 540.0;              // V; the voltage vector is limited to Vdc / sqrt(3)
     double Ts = 1e-4;                // control and sampling period, s
     int substeps = 10;               // RK4 steps per period

@@ -5,7 +5,7 @@
 // Besides the estimate: standard errors from the least-squares covariance sigma^2 (A^T W A)^-1
 // with sigma^2 = f* / (m - 4) estimated from the residual (m = equations with non-zero weight),
 // the condition number of the design, and the residual RMS of each axis - what an identification
-// report must show alongside the point estimate (DESIGN 5).
+// report must show alongside the point estimate (ARCHITECTURE.md section 10).
 //
 // Bounds: when theta* lies outside the search box, the box-constrained optimum is also computed
 // (exactly, by trying every active set of the 3^4 lower/free/upper choices and keeping the best

@@ -84,7 +84,7 @@ private:
 // i_d = -2 A state, theta = (R_s, L_d, L_q, psi_f), residuals of eq. 2:
 //   r_d = u_d - (R_s i_d - L_q omega i_q),  r_q = u_q - (R_s i_q + L_d omega i_d + psi_f omega).
 // Synthetic data for the paper's motor (R_s 0.33, L_d = L_q = 3.24e-3, psi_f 0.0776) at 2500 rpm,
-// p = 2, i_q about 8.6 A, with 0.5 V voltage and 0.02 A current noise; bounds of DESIGN.md 5.
+// p = 2, i_q about 8.6 A, with 0.5 V voltage and 0.02 A current noise; bounds of ARCHITECTURE.md section 10.
 // It is a convex quadratic, so linear least squares gives its exact optimum (known_optimum()).
 class SteadyStateQuadratic final : public Problem {
 public:

@@ -1,4 +1,4 @@
-// The paper's loops read literally (DESIGN.md section 4), checked on the points the algorithms
+// The paper's loops read literally (ARCHITECTURE.md section 9), checked on the points the algorithms
 // actually evaluate (recorded in order by RecordingProblem): TLBO and ITLBO against a plain
 // reference written from the papers; ITLBO's stepwise learning changes one component at a time and
 // keeps it only if it improves; ITLBO's mutation evaluates lo + hi - X_i of the learner as
@@ -32,7 +32,7 @@ struct Switches {
 };
 
 // A deliberately plain TLBO / ITLBO written from the papers (Rao et al. 2011; Li, Wang, Ji 2017,
-// eqs. 5-10 and the pseudo-code of section 2.2.2) as DESIGN.md section 4 reads them: in place,
+// eqs. 5-10 and the pseudo-code of section 2.2.2) as ARCHITECTURE.md section 9 reads them: in place,
 // index order; for every learner Mean is recomputed from the whole class as it is now and the
 // teacher is the current best (lowest index among equals); clamping as the Objective's. Random
 // draws in the order tlbo.cpp and itlbo.cpp document, for either learning factor (`r`), the

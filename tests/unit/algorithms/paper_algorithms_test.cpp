@@ -1,5 +1,5 @@
 // The paper's algorithms (TLBO, ITLBO of Li, Wang, Ji 2017, PSO): ITLBO with its switches off
-// is TLBO bit for bit; evaluations per iteration follow the formulas of DESIGN.md section 4;
+// is TLBO bit for bit; evaluations per iteration follow the formulas of ARCHITECTURE.md section 9;
 // each switch changes the run; runs are reproducible; bad parameters are clear errors.
 #include <gtest/gtest.h>
 #include <stdexcept>
@@ -11,7 +11,7 @@ namespace {
 
 constexpr const char* itlbo_all_off = "itlbo:tutorial=off,stepwise=off,obl=off";
 
-// DESIGN.md section 4: "With all three switches off ITLBO must be TLBO, bit for bit, for the
+// ARCHITECTURE.md section 9: "With all three switches off ITLBO must be TLBO, bit for bit, for the
 // same seed". Checked on a separable and a non-separable problem, with budgets that end at an
 // iteration boundary and in the middle of a phase, for several seeds and populations, and for
 // both learning factors (`r=coordinate`, the default, and `r=learner`).
@@ -52,7 +52,7 @@ void expect_costs(const std::string& algorithm, const Problem& problem, std::int
         EXPECT_EQ(n, per_iteration) << algorithm;
 }
 
-// The formulas of DESIGN.md section 4 (NP = 30, D = 10): PSO NP, TLBO 2 NP, ITLBO NP (teacher)
+// The formulas of ARCHITECTURE.md section 9 (NP = 30, D = 10): PSO NP, TLBO 2 NP, ITLBO NP (teacher)
 // + NP*D (stepwise) or NP (eq. 7) + one per mutation; p = 0 mutates no one, p = 1 everyone.
 TEST(PaperAlgorithms, EvaluationsPerIterationFollowTheFormulas) {
     const auto p = sphere(10);
@@ -92,7 +92,7 @@ TEST(PaperAlgorithms, MutationsAtTheDefaultProbabilityAreAboutOneInTen) {
     EXPECT_LT(mutations, 1150);
 }
 
-// Each of ITLBO's switches, alone, changes the run away from TLBO's (DESIGN.md section 4: three
+// Each of ITLBO's switches, alone, changes the run away from TLBO's (ARCHITECTURE.md section 9: three
 // independent switches); and the OBL options each change it too.
 TEST(PaperAlgorithms, EachSwitchAloneChangesTheRun) {
     const auto p = sphere(10);
@@ -139,7 +139,7 @@ TEST(PaperAlgorithms, SameSeedSameRunOtherSeedOtherRun) {
     }
 }
 
-// A bad value names the component, the parameter and its allowed range (STYLE.md: "pso:
+// A bad value names the component, the parameter and its allowed range (CONTRIBUTING.md: "pso:
 // parameter 'w' = 1.3 is outside [0, 1]").
 TEST(PaperAlgorithms, BadParametersAreClearErrors) {
     const auto message = [](const std::string& spec) -> std::string {

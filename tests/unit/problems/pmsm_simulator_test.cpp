@@ -76,8 +76,8 @@ TEST(PmsmSimulator, ReproducesTheIndependentSimulatorsCleanDataset) {
     }
 }
 
-// Schedule (DESIGN 5): id = 0 until 0.2 s, then plateaus of 50 ms alternating 0 / -2 A, starting
-// with 0; the current follows the -2 A step (current loop at 3000 rad/s: within 1 mA after 5 ms).
+// Schedule (ARCHITECTURE.md section 10): id = 0 until 0.2 s, then plateaus of 50 ms alternating 0 / -2 A,
+// starting with 0; the current follows the -2 A step (current loop at 3000 rad/s: within 1 mA after 5 ms).
 TEST(PmsmSimulator, InjectionScheduleAlternatesEvery50ms) {
     const SimulatorConfig config;
     const Dataset trace = simulate_trace(config, 4000);
@@ -139,9 +139,9 @@ TEST(PmsmSimulator, NoiseIsReproducibleForASeedAndAbsentWithoutIt) {
     EXPECT_NEAR(std::sqrt(sum_i / 300.0), 0.02, 0.02 * 4 / std::sqrt(600.0));
 }
 
-// Dead time makes the voltage error that biases the identification (DESIGN 5): each inverter leg
-// loses Vdc * t_dead / Ts = 5.4 V (1 us in 100 us at 540 V) against its current, a square wave whose
-// fundamental, (4 / pi) * 5.4 = 6.88 V, opposes the current vector. In the id = 0 state the current
+// Dead time makes the voltage error that biases the identification (ARCHITECTURE.md section 10): each
+// inverter leg loses Vdc * t_dead / Ts = 5.4 V (1 us in 100 us at 540 V) against its current, a square wave
+// whose fundamental, (4 / pi) * 5.4 = 6.88 V, opposes the current vector. In the id = 0 state the current
 // is on the q axis, so the controller must command 6.88 V more on q than eq. 2 predicts (measured
 // 6.87 V; 2 % asserted), and the injected state shifts the d-axis residual by volts.
 TEST(PmsmSimulator, DeadTimeBreaksTheIdealModel) {
@@ -174,8 +174,8 @@ std::pair<double, double> mean_residual_at_id0(const Dataset& d, const MotorPara
 
 // A voltage held in the stator frame lags the rotor by omega Ts / 2 on average (1.5 omega Ts with
 // a one-period delay); the logged (commanded) vector leads the one the motor gets by that angle
-// phi, so to first order r_d = -phi uq (-1.14 V at 2500 rpm) - the Rs-biasing error of DESIGN 5.
-// Asserted within 2 % (second-order terms are ~phi^2 / 6 = 1e-4). In the dq-frame hold the delay
+// phi, so to first order r_d = -phi uq (-1.14 V at 2500 rpm) - the Rs-biasing error of ARCHITECTURE.md
+// section 10. Asserted within 2 % (second-order terms are ~phi^2 / 6 = 1e-4). In the dq-frame hold the delay
 // leaves the steady state untouched (the residual stays at the 3e-5 V of the ideal case).
 TEST(PmsmSimulator, StatorFrameHoldAndDelayRotateTheVoltage) {
     SimulatorConfig config;
