@@ -93,7 +93,7 @@ One row per successful run.
 | problem, algorithm, label, run | the run |
 | best_f | its final best-so-far f |
 | evaluations | the evaluations it spent |
-| evals_to_target | the evaluation at which it reached the study's target (f - f* <= target); empty without a target or when not reached |
+| evals_to_target | the evaluation at which it reached the study's target (f - f* <= target, or f - f* <= relative_target x abs(f*) for a relative target); empty without a target or when not reached |
 
 )";
 
