@@ -36,7 +36,9 @@ std::string caption_of(const StudyIndex& index, const RelativeGaps& gaps,
         "of 0 or below is f* reached to the precision of doubles, or a best-known f* bettered. Success "
         "rate: runs that reached the study's target, " +
         (target ? target->condition() : std::string("none set")) +
-        ", over all runs (a failed run counts as unsuccessful). f* per problem: " + join(optima, "; ") + ".";
+        ", over all runs (a failed run counts as unsuccessful); a run stops at the target, so a median just "
+        "under it says that most runs reached it, not how far below they would have gone. f* per problem: " +
+        join(optima, "; ") + ".";
     if (!gaps.left_out.empty())
         caption += " Left out, having no known, non-zero f*: " + join(gaps.left_out, ", ") + ".";
     return caption + left_out_notes(index);
