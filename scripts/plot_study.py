@@ -4,7 +4,8 @@
 Usage: plot_study.py REPORT_DIR
 
 Reads REPORT_DIR/curves_iteration.csv, curves_evaluations.csv, parameters_iteration.csv,
-final_values.csv, target_hits.csv, critical_difference.csv, effects.csv and effect_means.csv
+final_values.csv, target_hits.csv, critical_difference.csv, effects.csv, effect_means.csv and
+relative_gap_medians.csv
 (written by `mhbench report`) and writes PDF, PNG and SVG files to REPORT_DIR/figures/ (the SVG
 files are inlined in the report's index.html). Algorithms are named by their labels (the `label`
 column). A study with several budgets has one report folder per
@@ -21,6 +22,11 @@ title names its budget (budget.txt of the folder).
   ecdf_targets_<problem>            fixed-target ECDF over the targets f - f* = 1e2 ... 1e-8 (COCO's
                                     bbob targets): fraction of (run, target) pairs reached within a
                                     number of evaluations (problems with a known optimum)
+  relative_gaps                     median relative gap (f - f*) / |f*| per problem (log y, problems in
+                                    the study's order), one line per algorithm; the relative target
+                                    dashed; medians at or below 4 eps (what doubles resolve of f*) drawn
+                                    at 4 eps (a budget with a relative target and two or more problems
+                                    with a known, non-zero f*)
   critical_difference               Friedman average ranks with the Nemenyi critical difference
                                     (Demsar 2006), bars joining algorithms that do not differ
   effects_overview_<design>         every main effect and interaction of a 2^k on/off design per
@@ -368,6 +374,7 @@ def plot_report(report):
     FIGURES.attempt("parameter_*", parameter_figures, report, out_dir, budget)
     FIGURES.attempt("final_values_*", final_value_figures, report, out_dir, budget)
     FIGURES.attempt("ecdf_targets_*", target_ecdfs, report, out_dir, budget)
+    FIGURES.attempt("relative_gaps", relative_gaps, report, out_dir, budget)
     FIGURES.attempt("critical_difference", critical_difference, report, out_dir, budget)
     FIGURES.attempt("effects_*", effects_figures, report, out_dir, budget)
 
@@ -480,6 +487,64 @@ def target_ecdfs(report, out_dir, budget):
         name = "ecdf_targets_" + slug(problem)
         FIGURES.attempt(name, ecdf_figure, curves, "fraction of (run, target) pairs reached",
                         problem + ": targets f - f* = 1e2 ... 1e-8" + budget, name, out_dir)
+
+
+# A relative gap below this is f* reached to what doubles resolve of it (the effects' floor, 4 eps |f*|,
+# relative): on the log axis such medians, 0 and below 0 among them, are drawn at it.
+GAP_FLOOR = 4 * sys.float_info.epsilon
+
+
+def relative_target_of(budget):
+    """R of "relative_target=R" in a " [budget ...]" title suffix; NaN without one."""
+    match = re.search(r"relative_target=([^,\]]+)", budget)
+    return number(match.group(1)) if match else math.nan
+
+
+def relative_gaps(report, out_dir, budget):
+    rows = read_rows(os.path.join(report, "relative_gap_medians.csv"))
+    if not rows:
+        return
+    problems = list(OrderedDict.fromkeys(r["problem"] for r in rows))
+    names = OrderedDict((r["problem"], r.get("name") or r["problem"]) for r in rows)
+    fig, ax = plt.subplots(figsize=(max(6, 1.6 * len(problems) + 2), 4.4))
+    left_out = LeftOut()
+    floored = 0
+    drawn = False
+    for (algorithm,), r in group(rows, "algorithm").items():
+        by_problem = {row["problem"]: number(row["median_relative_gap"]) for row in r}
+        xs, ys = [], []
+        for i, problem in enumerate(problems):
+            gap = by_problem.get(problem, math.nan)
+            if math.isnan(gap) or math.isinf(gap):
+                left_out.add("without a successful run" if math.isnan(gap) else "at +inf")
+                xs.append(i)
+                ys.append(math.nan)  # breaks the line there
+                continue
+            if gap <= GAP_FLOOR:
+                floored += 1
+            xs.append(i)
+            ys.append(max(gap, GAP_FLOOR))
+        ax.plot(xs, ys, marker="o", label=label_of(r[0]))
+        drawn = drawn or any(math.isfinite(y) for y in ys)
+    target = relative_target_of(budget)
+    if math.isfinite(target) and target > 0:
+        ax.axhline(target, color="black", linestyle="--", linewidth=1, label="relative target %g" % target)
+    if floored:
+        ax.axhline(GAP_FLOOR, color="grey", linestyle=":", linewidth=1)
+        FIGURES.note("relative_gaps", "%d median%s at or below 4 eps drawn at 4 eps"
+                     % (floored, "" if floored == 1 else "s"))
+        ax.set_xlabel("dotted: %d median%s at or below 4 eps (f* to double precision), drawn at 4 eps"
+                      % (floored, "" if floored == 1 else "s"), fontsize="small", color="grey")
+    if drawn:
+        ax.set_yscale("log")
+        ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ax.set_xticks(range(len(problems)))
+    ax.set_xticklabels([names[p] for p in problems], rotation=15, fontsize="small")
+    ax.set_xlim(-0.3, len(problems) - 0.7)
+    ax.set_ylabel("median relative gap (f - f*) / |f*|")
+    ax.set_title("Relative gap to f* per problem" + budget, fontsize="small")
+    finish_note(ax, "relative_gaps", left_out, drawn, "medians")
+    save(fig, out_dir, "relative_gaps")
 
 
 def critical_difference(report, out_dir, budget):

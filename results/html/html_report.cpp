@@ -41,6 +41,10 @@ constexpr FigureKind figure_kinds[] = {
      "f - f* = 1e2 ... 1e-8."},
     {"ecdf_target_", "Runs that reached the study's target",
      "Fraction of runs that reached the study's target within a number of evaluations."},
+    {"relative_gaps", "Relative gap to f* per problem",
+     "Median relative gap (f - f*) / |f*| of the final values per problem (log axis, problems in the "
+     "study's order), one line per algorithm: where the lines part, the optimisers stop being "
+     "interchangeable."},
     {"critical_difference", "Critical difference",
      "Friedman average ranks across problems with the Nemenyi critical difference (Demsar 2006); a bar "
      "joins algorithms that do not differ significantly."},

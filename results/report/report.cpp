@@ -10,6 +10,7 @@
 #include "results/analysis/critical_difference.hpp"
 #include "results/analysis/curve_data.hpp"
 #include "results/analysis/factorial_effects.hpp"
+#include "results/analysis/relative_gaps.hpp"
 #include "results/exports/cec_result_files.hpp"
 #include "results/exports/ioh_export.hpp"
 #include "results/html/html_report.hpp"
@@ -24,6 +25,7 @@
 #include "results/tables/comparison_tables.hpp"
 #include "results/tables/effects_table.hpp"
 #include "results/tables/paper_tables.hpp"
+#include "results/tables/relative_gap_table.hpp"
 #include "results/text/csv_table.hpp"
 #include "results/text/markdown_table.hpp"
 
@@ -61,7 +63,7 @@ void check_options(const ReportOptions& options) {
 std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOptions& comparison,
                                  const std::vector<DesignEffects>& designs,
                                  const std::vector<DesignCandidate>& rejected, bool list_algorithms,
-                                 const CecProtocol* protocol) {
+                                 const CecProtocol* protocol, const std::optional<RelativeGaps>& gaps) {
     std::vector<Table> tables;
     if (list_algorithms) {
         Table t;
@@ -79,6 +81,8 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
         tables.push_back(std::move(t));
     for (auto& t : comparison_tables(index, comparison))
         tables.push_back(std::move(t));
+    if (gaps) // problems on one scale: where the optimisers part
+        tables.push_back(relative_gap_table(index, *gaps));
     if (protocol != nullptr) // the competition's tables, per dimension
         for (auto& t : cec_tables(index, *protocol, comparison.reference, comparison.alpha))
             tables.push_back(std::move(t));
@@ -226,7 +230,8 @@ void write_or_remove(const fs::path& path, const std::optional<std::string>& con
 // The budget's curve data and statistics for the figures, and budget.txt; says which of the
 // optional files were written.
 void write_curve_data(const StudyIndex& index, const std::string& budget, const fs::path& dir,
-                      const std::vector<DesignEffects>& designs, double alpha, ReportFiles& files) {
+                      const std::vector<DesignEffects>& designs, const std::optional<RelativeGaps>& gaps,
+                      double alpha, ReportFiles& files) {
     write_or_remove(dir / "budget.txt",
                     budget.empty() ? std::nullopt : std::optional<std::string>(budget + "\n"));
     write_file_atomically(dir / "curves_iteration.csv", fitness_curves_by_iteration(index));
@@ -238,12 +243,19 @@ void write_curve_data(const StudyIndex& index, const std::string& budget, const 
     write_or_remove(dir / "critical_difference.csv", critical_difference);
     write_or_remove(dir / "effect_means.csv",
                     designs.empty() ? std::nullopt : std::optional<std::string>(effect_means_csv(designs)));
+    write_or_remove(dir / "relative_gap_medians.csv",
+                    gaps ? std::optional<std::string>(relative_gap_medians_csv(index, *gaps)) : std::nullopt);
     std::error_code ec;
-    if (designs.empty()) // no effects table: stale copies from an earlier report would mislead
-        for (const char* ext : {".md", ".tex", ".csv"})
+    // Tables a report may leave out: stale copies from an earlier report would mislead.
+    for (const char* ext : {".md", ".tex", ".csv"}) {
+        if (designs.empty())
             fs::remove(dir / (std::string("effects") + ext), ec);
+        if (!gaps)
+            fs::remove(dir / (std::string("relative_gaps") + ext), ec);
+    }
     files.critical_difference = critical_difference.has_value();
     files.effect_means = !designs.empty();
+    files.relative_gaps = gaps.has_value();
     files.budget_txt = !budget.empty();
 }
 
@@ -316,12 +328,13 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
     const CecProtocol* protocol = study_cec_protocol(study, console);
     console << '\n';
 
+    const std::optional<RelativeGaps> gaps = relative_gaps(index);
     const std::vector<Table> tables = budget_tables(index, comparison, factorial.designs, factorial.rejected,
-                                                    !study.algorithms.empty(), protocol);
+                                                    !study.algorithms.empty(), protocol, gaps);
     write_tables(tables, dir, options, console, all_markdown);
     ReportFiles files;
     files.formats.assign(options.formats.begin(), options.formats.end());
-    write_curve_data(index, budget, dir, factorial.designs, options.alpha, files);
+    write_curve_data(index, budget, dir, factorial.designs, gaps, options.alpha, files);
     write_cec_files(index, protocol, dir, console);
     const IohExportSummary ioh = write_ioh_export(index, dir / "ioh", options.ioh_precision);
     console << "tables and curve data: " << dir.string() << '\n';

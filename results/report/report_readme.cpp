@@ -93,7 +93,7 @@ One row per successful run.
 | problem, algorithm, label, run | the run |
 | best_f | its final best-so-far f |
 | evaluations | the evaluations it spent |
-| evals_to_target | the evaluation at which it reached the study's target (f - f* <= target); empty without a target or when not reached |
+| evals_to_target | the evaluation at which it reached the study's target (f - f* <= target, or f - f* <= relative_target x abs(f*) for a relative target); empty without a target or when not reached |
 
 )";
 
@@ -140,6 +140,23 @@ The points of the main-effects and interaction plots of a factorial design (the 
 | factor, level | a switch and its value (on/off) |
 | factor2, level2 | a second switch and its value for an interaction point; empty for a main effect |
 | mean_response | the mean response over the blocks at those levels |
+
+)";
+
+const char* const relative_gaps_file = R"(### relative_gap_medians.csv
+
+The data of the `relative_gaps` table and figure (a budget with a relative target, two or more
+problems with a known, non-zero f*): one row per (problem, algorithm), problems in the study's order.
+
+| column | meaning |
+| --- | --- |
+| problem, algorithm, label | the group |
+| name | the problem's short name in the table's headers and on the figure's axis: its family and the parameters that tell it from the study's other problems of that family |
+| f_opt | the problem's f* |
+| runs, failed | successful and failed runs |
+| median_relative_gap | median over the successful runs of (f - f*) / abs(f*), f the run's final best value; 0 or below: f* reached to the precision of doubles, or a best-known f* bettered; empty without a successful run |
+| reached | runs that reached the study's target |
+| success_rate | reached / (runs + failed) |
 
 )";
 
@@ -199,6 +216,8 @@ std::string report_readme(const std::vector<Table>& tables, const ReportFiles& f
         out += critical_difference_file;
     if (files.effect_means)
         out += effect_means_file;
+    if (files.relative_gaps)
+        out += relative_gaps_file;
     out += other_files;
     if (files.cec)
         out += "- `cec/`: the CEC organisers' result files, a row per checkpoint and a column per run; its "

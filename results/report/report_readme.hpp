@@ -1,6 +1,7 @@
 // report/README.md: the data dictionary written with every report, so that a reader of the CSV
 // files alone knows what each column holds, in which unit, how it was computed and how it rounds.
-// The data files (curves, final values, target hits, critical difference, effect means) have
+// The data files (curves, final values, target hits, critical difference, effect means, relative
+// gaps) have
 // fixed columns, described here once; each table's CSV is described from the table itself (its
 // title, columns and caption), so the dictionary cannot drift from what was written.
 #pragma once
@@ -17,6 +18,7 @@ struct ReportFiles {
     std::vector<std::string> formats; // of the tables: "md", "tex", "csv"
     bool critical_difference = false;
     bool effect_means = false;
+    bool relative_gaps = false;
     bool cec = false;
     bool ioh = false;
     bool figures = false;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 
+#include "results/analysis/budget_target.hpp"
 #include "results/analysis/evaluation_counts.hpp"
 #include "results/analysis/statistics.hpp"
 #include "results/tables/comparison_common.hpp"
@@ -140,11 +141,14 @@ std::string budget_note(const Budgets& budgets) {
 }
 
 std::string summary_caption(const StudyIndex& index, const Budgets& budgets, std::size_t without_success) {
+    const auto target = budget_target(index.budget());
     std::string caption =
         "Std is the sample standard deviation (two-pass), IQR = q75 - q25 (linear interpolation, type 7). "
-        "Success: the run reached the study's target (blank: no run on the problem reached one, or none was "
-        "set); ERT = evaluations of all runs (to the target for successful ones) / successful runs, as COCO "
-        "defines it. Budget columns: median over runs of the best-so-far value after that many evaluations, "
+        "Success: the run reached the study's target" +
+        (target ? ", " + target->condition() : std::string()) +
+        " (blank: no run on the problem reached one, or none was set); ERT = evaluations of all runs (to the "
+        "target for successful ones) / successful runs, as COCO defines it. Budget columns: median over runs "
+        "of the best-so-far value after that many evaluations, "
         "floor(fraction x E), rounded down, for one evaluation count E per problem, "
         "the same for every algorithm: " +
         std::string(

@@ -46,7 +46,7 @@ std::vector<double> estimated_run_costs(const PreparedStudy& study) {
     for (std::size_t b = 0; b < study.study.budgets.size(); ++b) {
         for (std::size_t p = 0; p < problems; ++p) {
             const Eigen::Index dimension = study.problems[p]->dimension();
-            const Budget budget = study.study.budgets[b].for_dimension(dimension);
+            const Budget budget = study.budget_for(b, p);
             for (std::size_t a = 0; a < algorithms; ++a) {
                 const auto first = static_cast<std::int64_t>((b * problems + p) * algorithms + a) * runs;
                 const auto key = std::make_tuple(b, a, dimension);

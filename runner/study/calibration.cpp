@@ -151,13 +151,12 @@ StudyEstimate estimate_study(const PreparedStudy& study, int threads, std::size_
         const StudyBudget& budget = study.study.budgets[b];
         BudgetEstimate& out = estimate.budgets[b];
         out.exact = (budget.max_evaluations || budget.evaluations_by_dimension) && !budget.max_iterations &&
-                    !budget.target_error;
+                    !budget.target_error && !budget.relative_target;
         if (out.exact) { // every run spends its budget: the count, not a sample's
             out.evaluations = 0;
-            for (const auto& problem : study.problems)
-                out.evaluations +=
-                    static_cast<double>(*budget.for_dimension(problem->dimension()).max_evaluations) *
-                    static_cast<double>(algorithms) * runs;
+            for (std::size_t p = 0; p < study.problems.size(); ++p)
+                out.evaluations += static_cast<double>(*study.budget_for(b, p).max_evaluations) *
+                                   static_cast<double>(algorithms) * runs;
         }
     }
     estimate.calibration_seconds =

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <set>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -78,13 +78,14 @@ std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::p
         out << "  " << prepared.budget_texts[b] << ": " << (e.exact ? "" : "about ")
             << count_text(e.evaluations) << " evaluations";
         if (s.budgets[b].evaluations_by_dimension) { // what a run gets at each dimension of the study
-            std::set<std::int64_t> dimensions;
-            for (const auto& problem : prepared.problems)
-                dimensions.insert(problem->dimension());
+            // Each D with its first problem, whose budget says the count.
+            std::map<std::int64_t, std::size_t> dimensions;
+            for (std::size_t p = 0; p < prepared.problems.size(); ++p)
+                dimensions.emplace(prepared.problems[p]->dimension(), p);
             out << " (per run:";
-            for (const std::int64_t d : dimensions)
-                out << (d == *dimensions.begin() ? " " : ", ")
-                    << count_text(static_cast<double>(*s.budgets[b].for_dimension(d).max_evaluations))
+            for (const auto& [d, p] : dimensions)
+                out << (d == dimensions.begin()->first ? " " : ", ")
+                    << count_text(static_cast<double>(*prepared.budget_for(b, p).max_evaluations))
                     << " at D = " << d;
             out << ")";
         }

@@ -40,6 +40,40 @@ void check_budget(const StudyBudget& budget, std::vector<std::string>& errors) {
                          " is outside [1, inf)");
     if (budget.target_error && !(std::isfinite(*budget.target_error) && *budget.target_error >= 0.0))
         errors.push_back("budget: target = " + format_real(*budget.target_error) + " is outside [0, inf)");
+    if (budget.relative_target && !(std::isfinite(*budget.relative_target) && *budget.relative_target >= 0.0))
+        errors.push_back("budget: relative_target = " + format_real(*budget.relative_target) +
+                         " is outside [0, inf)");
+    if (budget.target_error && budget.relative_target)
+        errors.push_back(
+            "budget '" + budget_text(budget) +
+            "': give target=E (f - f* <= E) or relative_target=R (f - f* <= R x |f*|), not both");
+}
+
+// A target needs f*, and a relative one a finite, non-zero f*: said once per problem, however many
+// budgets set one.
+void check_targets(const PreparedStudy& prepared, std::vector<std::string>& errors) {
+    const auto& budgets = prepared.study.budgets;
+    const bool absolute = std::any_of(budgets.begin(), budgets.end(),
+                                      [](const StudyBudget& b) { return b.target_error.has_value(); });
+    const bool relative = std::any_of(budgets.begin(), budgets.end(),
+                                      [](const StudyBudget& b) { return b.relative_target.has_value(); });
+    if (!absolute && !relative)
+        return;
+    for (std::size_t p = 0; p < prepared.problems.size(); ++p) {
+        if (!prepared.problems[p])
+            continue;
+        const std::string& spec = prepared.problem_specs[p];
+        const auto optimum = prepared.problems[p]->known_optimum();
+        if (!optimum) {
+            errors.push_back(std::string("budget: a ") + (relative && !absolute ? "relative " : "") +
+                             "target needs a known optimum; problem '" + spec + "' has none");
+            continue;
+        }
+        if (relative && relative_target_refusal(optimum->f))
+            errors.push_back("budget: a relative target needs a finite, non-zero f* (it stops at f - f* <= "
+                             "relative_target x |f*|); problem '" +
+                             spec + "' has f* = " + format_real(optimum->f) + ": give target=E instead");
+    }
 }
 
 std::string origin_of(const std::vector<std::string>& origins, std::size_t i) {
@@ -349,6 +383,17 @@ PreparedStudy::RunCell PreparedStudy::cell(std::int64_t run_id) const {
     return c;
 }
 
+Budget PreparedStudy::budget_for(std::size_t budget, std::size_t problem) const {
+    const StudyBudget& b = study.budgets.at(budget);
+    const Problem& p = *problems.at(problem);
+    // f* is asked for only where a target is relative to it (an output-error f* costs a simulation).
+    std::optional<double> f_opt;
+    if (b.relative_target)
+        if (const auto optimum = p.known_optimum())
+            f_opt = optimum->f;
+    return b.for_problem(p.dimension(), f_opt);
+}
+
 RunRequest PreparedStudy::request(std::int64_t run_id) const {
     const RunCell c = cell(run_id);
     const std::size_t a = c.algorithm;
@@ -364,7 +409,7 @@ RunRequest PreparedStudy::request(std::int64_t run_id) const {
     r.seed = study.seeds == SeedMode::common
                  ? derive_seed(study.seed, problem_identities[p], index)
                  : derive_seed(study.seed, algorithm_specs[a], problem_identities[p], index);
-    r.budget = study.budgets[c.budget].for_dimension(problems[p]->dimension());
+    r.budget = budget_for(c.budget, p);
     r.budget_text = budget_texts[c.budget];
     return r;
 }
@@ -398,13 +443,7 @@ PreparedStudy prepare_study(const Study& study, const AlgorithmRegistry& algorit
     check_dimension_budgets(prepared, errors);
     check_optimizer_dimensions(prepared, errors);
     check_protocol(prepared, errors);
-    // A target needs f*; said once per problem, however many budgets set one.
-    if (std::any_of(study.budgets.begin(), study.budgets.end(),
-                    [](const Budget& b) { return b.target_error; }))
-        for (std::size_t p = 0; p < prepared.problems.size(); ++p)
-            if (prepared.problems[p] && !prepared.problems[p]->known_optimum())
-                errors.push_back("budget: a target needs a known optimum; problem '" +
-                                 prepared.problem_specs[p] + "' has none");
+    check_targets(prepared, errors);
     if (!errors.empty()) {
         std::string joined;
         for (const auto& e : errors)

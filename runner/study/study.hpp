@@ -49,7 +49,8 @@ struct Study {
     std::int64_t runs = 20; // repetitions of each (algorithm, problem, budget)
     std::uint64_t seed = 1;
     SeedMode seeds = SeedMode::common;
-    // Iterations and/or evaluations (whichever is spent first), optional target; several budgets
+    // Iterations and/or evaluations (whichever is spent first), optional target (absolute or
+    // relative to f*); several budgets
     // make the budget a factor of the study, each reported separately.
     std::vector<StudyBudget> budgets{StudyBudget{}};
     // A CEC competition protocol the study follows ("cec2017", "cec2022"; results/analysis/cec_protocol.hpp),
@@ -97,6 +98,10 @@ struct PreparedStudy {
         std::int64_t run_index = 0;
     };
     [[nodiscard]] RunCell cell(std::int64_t run_id) const;
+    // The budget of a run of budget `budget` on problem `problem` (indices into study.budgets and
+    // problems): its evaluations at the problem's dimension, its target resolved against the
+    // problem's f* (StudyBudget::for_problem).
+    [[nodiscard]] Budget budget_for(std::size_t budget, std::size_t problem) const;
     // The request of run `run_id` in [0, run_count()); throws std::out_of_range otherwise.
     [[nodiscard]] RunRequest request(std::int64_t run_id) const;
 };

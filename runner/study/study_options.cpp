@@ -104,12 +104,17 @@ po::options_description study_options() {
          "10000*dim (10000 x D) or dim10:200000+dim20:1000000 (a count per D listed; others are refused); "
          "with --iterations, whichever is spent first ends the run. Replaces a preset's budgets")
         ("budget", po::value<specs>()->multitoken()->composing(),
-         "one budget as iterations=N,evaluations=N,target=E (any of them; evaluations as for --evaluations); "
+         "one budget as iterations=N,evaluations=N,target=E (any of them; evaluations as for --evaluations; "
+         "relative_target=R instead of target stops at f - f* <= R x |f*|); "
          "repeat it to make the budget a factor of the study: --budget iterations=150 --budget "
          "evaluations=15050, each reported separately")
         ("budgets", po::value<specs>()->multitoken()->composing(), "same as --budget")
         ("target", po::value<std::string>(),
-         "also stop a run once best f - f* <= this (problems with a known optimum); applies to every budget")
+         "also stop a run once best f - f* <= this (problems with a known optimum); applies to every budget, "
+         "replacing its target")
+        ("relative-target", po::value<std::string>(),
+         "also stop a run once best f - f* <= this x |f*| (problems with a known, non-zero optimum), e.g. 1e-6; "
+         "applies to every budget, replacing its target; not with --target")
         ("protocol", po::value<std::string>(),
          "follow a CEC competition protocol: cec2017 or cec2022 (none: no protocol). The report adds the "
          "competition's tables per dimension and the organisers' result files (report/cec/); the problems "
@@ -183,12 +188,15 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
             fail("is not one of {" + cec_protocol_names() + ", none}");
     } else if (key == "budget" || key == "budgets") {
         add_budgets(budgets_, value, prefix, errors);
-    } else if (key == "target") {
+    } else if (key == "target" || key == "relative-target") {
         double v = 0;
         if (!parse_real(value, v))
             fail("is not a finite number");
+        else if (seen_.count(key == "target" ? "relative-target" : "target") != 0)
+            errors.push_back(prefix +
+                             "give target (f - f* <= E) or relative-target (f - f* <= R x |f*|), not both");
         else
-            target_ = v;
+            (key == "target" ? target_ : relative_target_) = v;
     } else {
         errors.push_back(prefix + "unknown option " + quoted_excerpt(key));
     }
@@ -208,9 +216,12 @@ void StudyOptionReader::finish(std::vector<std::string>&) {
         seen_.count("iterations") != 0 || seen_.count("evaluations") != 0 || !budgets_.empty();
     if (budget_given)
         study_.budgets = budgets.empty() ? std::vector<StudyBudget>{StudyBudget{}} : budgets;
-    if (target_)
-        for (auto& b : study_.budgets)
+    // Either replaces every budget's target, of either kind: a budget has one target.
+    if (target_ || relative_target_)
+        for (auto& b : study_.budgets) {
             b.target_error = target_;
+            b.relative_target = relative_target_;
+        }
 }
 
 } // namespace mhb

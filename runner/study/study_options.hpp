@@ -15,14 +15,15 @@
 namespace mhb {
 
 // algorithms/algorithm, problems/problem, runs, seed, seeds, iterations, evaluations, target,
-// budget/budgets, protocol, plugins/plugin, with their help texts.
+// relative-target, budget/budgets, protocol, plugins/plugin, with their help texts.
 boost::program_options::options_description study_options();
 
 // Applies the study options of one source — the command line, or one study file — on top of a
 // study. What a source gives replaces the study's value; a source's algorithm (problem) lines
 // together replace the study's list. A source's iterations/evaluations make one budget and its
-// budget lines one budget each; together they replace the study's budgets, and a target applies
-// to every budget. Errors are collected, each prefixed with where the option was written.
+// budget lines one budget each; together they replace the study's budgets, and a target or a
+// relative target applies to every budget (replacing the target it had, of either kind). Errors are
+// collected, each prefixed with where the option was written.
 class StudyOptionReader {
 public:
     explicit StudyOptionReader(Study& study) : study_(study) {}
@@ -41,6 +42,7 @@ private:
     std::optional<std::int64_t> evaluations_;
     std::optional<DimensionEvaluations> evaluations_by_dimension_;
     std::optional<double> target_;
+    std::optional<double> relative_target_;
     std::vector<StudyBudget> budgets_;
 };
 

@@ -126,6 +126,24 @@ std::vector<BadInputCase> catalogue() {
          stderr_says({"mhbench run: threads = 0 is outside [1, inf)"})},
         {"", "run --algorithms random-search" + tiny_run + " --target abc", 2,
          stderr_says({"mhbench run: target = abc is not a finite number"})},
+        {"", "run --algorithms random-search" + tiny_run + " --relative-target abc", 2,
+         stderr_says({"mhbench run: relative-target = abc is not a finite number"})},
+        {"", "run --algorithms random-search" + tiny_run + " --target 1e-8 --relative-target 1e-6", 2,
+         stderr_says({"mhbench run: give target (f - f* <= E) or relative-target (f - f* <= R x |f*|), not both"})},
+        {"", "run --algorithms random-search" + tiny_run + " --relative-target 1e-6", 2,
+         stderr_says({"mhbench run: budget: a relative target needs a finite, non-zero f* (it stops at f - f* <= "
+               "relative_target x |f*|); problem 'sphere:dim=2' has f* = 0: give target=E instead"})},
+        {"", "run --algorithms pso --problems fluxmap:synthetic=on,noise=0.1 --evaluations 100 --relative-target 1e-6 "
+             "--out s", 2,
+         stderr_says({"mhbench run: budget: a relative target needs a known optimum; problem "
+               "'fluxmap:noise=0.1,synthetic=on' has none"})},
+        {"", "run --algorithms random-search --problems bbob:f=1,dim=2 --budget evaluations=100,relative_target=-1 "
+             "--out s", 2,
+         stderr_says({"mhbench run: budget: parameter 'relative_target' = -1 is outside [0, inf]"})},
+        {"", "run --algorithms random-search --problems bbob:f=1,dim=2 --budget "
+             "evaluations=100,relative_target=1e-6,target=1e-8 --out s", 2,
+         stderr_says({"mhbench run: budget 'evaluations=100,relative_target=1e-6,target=1e-8': give target=E "
+               "(f - f* <= E) or relative_target=R (f - f* <= R x |f*|), not both"})},
         {"", "run --algorithms random-search --problems sphere --budget iterations=abc --out s", 2,
          one_line("iterations")},
         {"", "run --algorithms random-search --problems sphere --budget bogus=5 --out s", 2,

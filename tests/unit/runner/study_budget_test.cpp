@@ -1,8 +1,9 @@
 // Budgets that depend on the problem's dimension (`evaluations=10000*dim`,
-// `evaluations=dim10:200000+dim20:1000000`) and the `protocol` key of a study: parsing and its
-// errors, each run getting the count of its own dimension, every configuration error named before a
-// run starts, study.ini round trips, the dry run's count, and run identities of existing studies
-// unchanged (pinned to the store an earlier mhbench wrote).
+// `evaluations=dim10:200000+dim20:1000000`), targets relative to the problem's f*
+// (`relative_target=1e-6`) and the `protocol` key of a study: parsing and its errors, each run
+// getting the count of its own dimension and the target of its own f*, every configuration error
+// named before a run starts, study.ini round trips, the dry run's count, and run identities of
+// existing studies unchanged (pinned to the store an earlier mhbench wrote).
 #include <gtest/gtest.h>
 #include <stdexcept>
 
@@ -13,6 +14,7 @@
 #include "runner/study/study.hpp"
 #include "runner/study/study_file.hpp"
 #include "runner/study/study_options.hpp"
+#include "tests/unit/runner/test_problem.hpp"
 
 namespace mhb {
 namespace {
@@ -40,16 +42,16 @@ TEST(StudyBudget, EvaluationsByDimensionReadAndWriteBack) {
     EXPECT_FALSE(per.max_evaluations);
     ASSERT_TRUE(per.evaluations_by_dimension);
     EXPECT_EQ(budget_text(per), "evaluations=10000*dim,target=1e-08");
-    EXPECT_EQ(per.for_dimension(10).max_evaluations, 100000);
-    EXPECT_EQ(per.for_dimension(30).max_evaluations, 300000);
-    EXPECT_EQ(per.for_dimension(30).target_error, 1e-8);
+    EXPECT_EQ(per.for_problem(10, std::nullopt).max_evaluations, 100000);
+    EXPECT_EQ(per.for_problem(30, std::nullopt).max_evaluations, 300000);
+    EXPECT_EQ(per.for_problem(30, std::nullopt).target_error, 1e-8);
 
     const StudyBudget listed = parse_budget("iterations=50,evaluations=dim20:1000000+dim10:200000");
     EXPECT_EQ(budget_text(listed), "iterations=50,evaluations=dim10:200000+dim20:1000000");
-    EXPECT_EQ(listed.for_dimension(20).max_evaluations, 1000000);
-    EXPECT_EQ(listed.for_dimension(20).max_iterations, 50);
+    EXPECT_EQ(listed.for_problem(20, std::nullopt).max_evaluations, 1000000);
+    EXPECT_EQ(listed.for_problem(20, std::nullopt).max_iterations, 50);
     try {
-        (void)listed.for_dimension(30);
+        (void)listed.for_problem(30, std::nullopt);
         ADD_FAILURE() << "dimension 30 is not listed";
     } catch (const std::invalid_argument& e) {
         EXPECT_STREQ(e.what(), "budget 'iterations=50,evaluations=dim10:200000+dim20:1000000' gives no "
@@ -58,7 +60,7 @@ TEST(StudyBudget, EvaluationsByDimensionReadAndWriteBack) {
     // Plain budgets are what they were, text and messages alike.
     EXPECT_EQ(budget_text(parse_budget("evaluations=1e5")), "evaluations=100000");
     EXPECT_EQ(budget_text(parse_budget("evaluations=1e+5")), "evaluations=100000");
-    EXPECT_EQ(parse_budget("evaluations=15050").for_dimension(7).max_evaluations, 15050);
+    EXPECT_EQ(parse_budget("evaluations=15050").for_problem(7, std::nullopt).max_evaluations, 15050);
     try {
         (void)parse_budget("evaluations=abc");
         ADD_FAILURE();
@@ -142,6 +144,163 @@ TEST(StudyBudget, StudyFilesAndTheCommandLineTakeIt) {
                         0),
         0u)
         << errors[1];
+}
+
+TEST(StudyBudget, RelativeTargetReadWrittenBackAndResolvedAgainstTheProblemsOptimum) {
+    const StudyBudget b = parse_budget("evaluations=2e4,relative_target=1e-6");
+    EXPECT_EQ(b.relative_target, 1e-6);
+    EXPECT_FALSE(b.target_error); // resolved per problem, never set on the study's budget
+    const std::string text = budget_text(b);
+    EXPECT_EQ(text, "evaluations=20000,relative_target=1e-06");
+    EXPECT_EQ(budget_text(parse_budget(text)), text); // run records and identities read it back alike
+    EXPECT_EQ(budget_text(parse_budget("relative_target=2.5e-7,iterations=5")),
+              "iterations=5,relative_target=2.5e-07");
+    // f - f* <= R |f*|, for a negative f* too.
+    EXPECT_EQ(b.for_problem(14, 36.099558875909494).target_error, 1e-6 * 36.099558875909494);
+    EXPECT_EQ(b.for_problem(2, -50.0).target_error, 1e-6 * 50.0);
+    EXPECT_EQ(b.for_problem(2, -50.0).max_evaluations, 20000);
+    EXPECT_EQ(parse_budget("evaluations=10,target=1e-3").for_problem(2, 7.0).target_error, 1e-3);
+    const auto refusal = [&](std::optional<double> f_opt) {
+        try {
+            (void)b.for_problem(2, f_opt);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(refusal(std::nullopt),
+              "budget 'evaluations=20000,relative_target=1e-06': a relative target needs a known optimum");
+    EXPECT_EQ(refusal(0.0),
+              "budget 'evaluations=20000,relative_target=1e-06': a relative target needs a finite, "
+              "non-zero f* (it stops at f - f* <= relative_target x |f*|; give target=E instead); "
+              "f* = 0");
+    const auto parse_error = [](const std::string& budget) {
+        try {
+            (void)parse_budget(budget);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(parse_error("evaluations=10,relative_target=1e-6,target=1e-8"),
+              "budget 'evaluations=10,relative_target=1e-6,target=1e-8': give target=E (f - f* <= E) or "
+              "relative_target=R (f - f* <= R x |f*|), not both");
+    EXPECT_EQ(parse_error("evaluations=10,relative_target=-1"),
+              "budget: parameter 'relative_target' = -1 is outside [0, inf]");
+    EXPECT_EQ(parse_error("evaluations=10,relative_target=inf"),
+              "budget: parameter 'relative_target' = inf is not a finite number");
+    EXPECT_EQ(parse_error("relative_target=1e-6"),
+              "budget 'relative_target=1e-6': give iterations=N and/or evaluations=N (target=E or "
+              "relative_target=R is optional)");
+}
+
+// A bowl whose minimum is f* = -50 at (0.5, 0.5): a relative target of 1e-6 is f - f* <= 5e-5.
+ProblemRegistry bowl_registry() {
+    return test::registry_of("bowl", [](const ParameterValues&) -> std::unique_ptr<Problem> {
+        return std::make_unique<test::TestProblem>(
+            2, [](const Eigen::VectorXd& x) { return -50.0 + (x.array() - 0.5).square().sum(); },
+            std::vector<std::string>{}, KnownOptimum{-50.0, Eigen::VectorXd::Constant(2, 0.5)});
+    });
+}
+
+TEST(StudyBudget, ARunStopsAtTheRelativeTargetOfItsProblem) {
+    Study s;
+    s.algorithms = {"cmaes"};
+    s.problems = {"bowl"};
+    s.runs = 2;
+    s.budgets = {parse_budget("evaluations=5000,relative_target=1e-6")};
+    const PreparedStudy p = prepare_study(s, builtin_algorithms(), bowl_registry());
+    EXPECT_EQ(p.request(0).budget.target_error, 1e-6 * 50.0);
+    EXPECT_EQ(p.request(0).budget_text, "evaluations=5000,relative_target=1e-06");
+    const RunRecord record = execute_run(p.request(0));
+    ASSERT_TRUE(record.ok) << record.message;
+    ASSERT_TRUE(record.evaluations_to_target.has_value());
+    EXPECT_EQ(record.evaluations, *record.evaluations_to_target); // it stopped there
+    EXPECT_LT(record.evaluations, 5000);
+    EXPECT_LE(record.best_f - -50.0, 1e-6 * 50.0);
+    EXPECT_EQ(record.budget, "evaluations=5000,relative_target=1e-06");
+    // The same run as the absolute target it resolves to, but for the budget it records.
+    Study absolute = s;
+    absolute.budgets = {parse_budget("evaluations=5000")};
+    absolute.budgets.front().target_error = 1e-6 * 50.0;
+    const RunRecord same =
+        execute_run(prepare_study(absolute, builtin_algorithms(), bowl_registry()).request(0));
+    EXPECT_EQ(same.evaluations, record.evaluations);
+    EXPECT_EQ(same.best_f, record.best_f);
+    // The identity names the rule, not the resolved target.
+    EXPECT_NE(run_key(p, 0).facts.find("budget = evaluations=5000,relative_target=1e-06\n"),
+              std::string::npos);
+    // Runs that may stop early: the dry run's count is an estimate, and shards weigh the budget.
+    EXPECT_FALSE(estimate_study(p).budgets[0].exact);
+    EXPECT_EQ(estimated_run_costs(p).front(), 5000.0 * 2);
+}
+
+TEST(StudyBudget, ARelativeTargetNeedsAKnownNonZeroOptimum) {
+    const ProblemRegistry flat =
+        test::registry_of("flat", [](const ParameterValues&) -> std::unique_ptr<Problem> {
+            return std::make_unique<test::TestProblem>(1, [](const Eigen::VectorXd&) { return 0.0; });
+        });
+    Study s;
+    s.algorithms = {"random-search"};
+    s.problems = {"flat"};
+    s.budgets = {parse_budget("evaluations=10,relative_target=1e-6")};
+    try {
+        (void)prepare_study(s, builtin_algorithms(), flat);
+        ADD_FAILURE() << "no known optimum";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "budget: a relative target needs a known optimum; problem 'flat' has none");
+    }
+    // f* = 0: a relative target would ask for f* exactly.
+    EXPECT_EQ(
+        error_of(sphere_study("evaluations=10,relative_target=1e-6")),
+        "budget: a relative target needs a finite, non-zero f* (it stops at f - f* <= relative_target x "
+        "|f*|); problem 'sphere:dim=2' has f* = 0: give target=E instead\n"
+        "budget: a relative target needs a finite, non-zero f* (it stops at f - f* <= relative_target x "
+        "|f*|); problem 'sphere:dim=5' has f* = 0: give target=E instead");
+    // Set in code rather than read: the same checks as target's.
+    Study negative = sphere_study("evaluations=10");
+    negative.problems = {"bbob:f=1,dim=2,instance=1"};
+    negative.budgets.front().relative_target = -1.0;
+    EXPECT_EQ(error_of(negative), "budget: relative_target = -1 is outside [0, inf)");
+    negative.budgets.front().relative_target = 1e-6;
+    negative.budgets.front().target_error = 1e-8;
+    EXPECT_EQ(error_of(negative), "budget 'evaluations=10,target=1e-08,relative_target=1e-06': give target=E "
+                                  "(f - f* <= E) or relative_target=R (f - f* <= R x |f*|), not both");
+}
+
+TEST(StudyBudget, StudyFilesAndTheCommandLineTakeARelativeTarget) {
+    const Study s = parse_study_ini("algorithms = pso\nproblems = bbob:f=1,dim=2,instance=1\nruns = 2\n"
+                                    "budget = evaluations=100,relative_target=1e-6\nbudget = iterations=3\n",
+                                    "r.ini");
+    const PreparedStudy p = prepare_study(s);
+    const std::string text = study_ini(p.study);
+    EXPECT_NE(text.find("budget = evaluations=100,relative_target=1e-06\nbudget = iterations=3\n"),
+              std::string::npos)
+        << text;
+    EXPECT_EQ(study_ini(prepare_study(parse_study_ini(text, "study.ini")).study), text);
+    // --relative-target (or `relative-target =`) replaces every budget's target, of either kind...
+    Study overridden = s;
+    overridden.budgets.front() = parse_budget("evaluations=100,target=1e-8");
+    std::vector<std::string> errors;
+    StudyOptionReader reader(overridden);
+    reader.apply("relative-target", "1e-5", "", errors);
+    reader.finish(errors);
+    EXPECT_TRUE(errors.empty());
+    EXPECT_EQ(budget_text(overridden.budgets[0]), "evaluations=100,relative_target=1e-05");
+    EXPECT_EQ(budget_text(overridden.budgets[1]), "iterations=3,relative_target=1e-05");
+    // ... as --target replaces a relative one.
+    StudyOptionReader absolute(overridden);
+    absolute.apply("target", "1e-3", "", errors);
+    absolute.finish(errors);
+    EXPECT_EQ(budget_text(overridden.budgets[0]), "evaluations=100,target=0.001");
+    // Both in one source: one of them is refused where it was written.
+    Study both;
+    parse_study_file("relative-target = 1e-6\ntarget = 1e-8\nrelative-target = 2\n", "both.ini", both,
+                     errors);
+    EXPECT_EQ(errors,
+              (std::vector<std::string>{
+                  "both.ini:2: give target (f - f* <= E) or relative-target (f - f* <= R x |f*|), not both",
+                  "both.ini:3: 'relative-target' is given twice"}));
 }
 
 TEST(StudyProtocol, AStudyFollowsACecProtocolByName) {

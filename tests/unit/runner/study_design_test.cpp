@@ -203,7 +203,9 @@ TEST(StudyFileDesign, EveryErrorOfAFileIsReportedWithItsLine) {
                   "bad.ini:2: sections ('[study]') are not used in study files",
                   "bad.ini:3: 'just words' is not key = value",
                   "bad.ini:4: unknown key 'colour'; known: algorithms, algorithm, problems, problem, runs, "
-                  "seed, seeds, iterations, evaluations, budget, budgets, target, protocol, plugins, plugin",
+                  "seed, seeds, iterations, evaluations, budget, budgets, target, relative-target, protocol, "
+                  "plugins, "
+                  "plugin",
                   "bad.ini:5: unknown key 'out' (it is not part of a study: give --out on the command line)",
                   "bad.ini:6: seeds = sometimes is not one of {common, per-algorithm}",
                   "bad.ini:7: iterations = 1e300 is too large (at most 1000000000000000)",
@@ -233,6 +235,38 @@ TEST(StudyDesign, ShippedPresetsAreStudyFilesAndTheAblationIsTheFullFactorial) {
     EXPECT_EQ(bbob.problem_specs.back(), "bbob:dim=20,f=24,instance=15");
     for (const char* name : {"fair", "paper", "paper-table4", "centre-bias", "smoke"})
         EXPECT_NO_THROW((void)prepare_study(find_study_preset(name).study)) << name;
+}
+
+// Issue 35's presets: the flux map against every optimiser at two budgets, and the ladder of three
+// identification problems, each with a known, non-zero f* for the relative target (1e-6 |f*|).
+TEST(StudyDesign, TheFluxMapAndLadderPresetsMeasureSuccessRelativeToFStar) {
+    const PreparedStudy flux = prepare_study(find_study_preset("flux-map").study);
+    EXPECT_EQ(flux.problem_specs, (std::vector<std::string>{"fluxmap:model=pmsyrm"}));
+    EXPECT_EQ(flux.budget_texts, (std::vector<std::string>{"evaluations=20000,relative_target=1e-06",
+                                                           "evaluations=200000,relative_target=1e-06"}));
+    EXPECT_EQ(flux.algorithms.size(), 19u);
+    std::set<std::string> labels;
+    for (const auto& a : flux.algorithms)
+        labels.insert(a.label);
+    for (const char* label :
+         {"itlbo", "itlbo[T+S-O-]", "itlbo[T-S+O-]", "itlbo[T-S-O+]", "tlbo", "bipop-cmaes", "bobyqa",
+          "sbplx", "nelder-mead", "crs2-lm", "direct-l", "isres", "esch"})
+        EXPECT_EQ(labels.count(label), 1u) << label;
+    // A run on the flux map stops once f - f* <= 1e-6 x 36.099558875909494 A^2.
+    EXPECT_EQ(flux.request(0).budget.target_error, 1e-6 * 36.099558875909494);
+
+    const PreparedStudy ladder = prepare_study(find_study_preset("pmsm-ladder").study);
+    ASSERT_EQ(ladder.problems.size(), 3u);
+    EXPECT_EQ(ladder.algorithms.size(), 9u);
+    for (const auto& problem : ladder.problems) {
+        const auto optimum = problem->known_optimum();
+        ASSERT_TRUE(optimum.has_value());
+        EXPECT_GT(optimum->f, 0.0); // noisy data: the relative target means something
+    }
+    for (const auto* p : {&flux, &ladder}) {
+        EXPECT_EQ(p->study.runs, 20);
+        EXPECT_EQ(p->study.seeds, SeedMode::common);
+    }
 }
 
 TEST(StudyDesign, TheEstimateCountsEvaluationBudgetsExactly) {
