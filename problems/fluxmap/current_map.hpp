@@ -7,8 +7,9 @@
 //   PM-SyRM (Lelli et al. 2024), theta = those nine, psi_n a_b a_bp W k_q: psi_b = psi_d - psi_n,
 //     s = sqrt(psi_b^2 + k_q psi_q^2), G_b = a_b s^W / (1 + a_bp s^W), i_d += G_b psi_b,
 //     i_q += k_q G_b psi_q.
-// The points are fixed, so log d and log q are taken once; each power is then exp(p log x) over
-// all points at once (Eigen arrays). x^0 is 1 also at x = 0 (psi_q = 0 on the i_q = 0 row).
+// The points are fixed, so log d and log q are taken once; each power is then exp(p log x), by the
+// array exp and log of problems/core/vector_math.hpp. x^0 is 1 also at x = 0 (psi_q = 0 on the
+// i_q = 0 row), and a power of a zero flux linkage, always multiplied by it, gives a zero current.
 #pragma once
 
 #include <Eigen/Core>
@@ -44,6 +45,11 @@ public:
     [[nodiscard]] double sum_of_squares(const Eigen::VectorXd& theta) const;
 
 private:
+    struct BlockScratch;
+    // The currents of points [k, k + n), n at most 64 (one block), into i_d[0, n), i_q[0, n).
+    void block_currents(const Eigen::VectorXd& t, Eigen::Index k, Eigen::Index n, double* i_d, double* i_q,
+                        BlockScratch& scratch) const;
+
     Model model_;
     FluxMap map_;
     Eigen::ArrayXd log_d_, log_q_, d2_, q2_;

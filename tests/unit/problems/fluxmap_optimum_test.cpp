@@ -1,6 +1,6 @@
 // Re-derives the best-known optimum shipped for the Baldor flux map (problems/fluxmap/data/
 // baldor-optimum.csv) by the documented method: fit_multistart, 100 starts, seed 1, default box.
-// Slow (about 10 s per model); it prints the rows of the file and how many starts reached f*.
+// Slow (a few seconds per model); it prints the rows of the file and how many starts reached f*.
 #include <cstdio>
 #include <gtest/gtest.h>
 
