@@ -11,7 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "problems/core/executable_path.hpp"
+#include "problems/core/process/executable_path.hpp"
 #include "problems/external/command.hpp"
 
 namespace mhb::external {
@@ -124,7 +124,7 @@ private:
 
 // Resolved before fork: getenv is not async-signal-safe.
 std::string resolve_program(const std::string& program) {
-    return find_executable(program).value_or(std::string());
+    return process::find_executable(program).value_or(std::string());
 }
 
 ChildLink::ChildLink(const std::vector<std::string>& argv) {

@@ -15,7 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "problems/core/executable_path.hpp" // header-only: results/ links no other library
+#include "problems/core/process/executable_path.hpp"
 
 namespace mhb {
 
@@ -231,7 +231,7 @@ ChildOutcome run_child_process(const std::string& program, const std::vector<std
     static std::mutex one_at_a_time; // the signal handling above serves one child
     const std::lock_guard<std::mutex> lock(one_at_a_time);
     ChildOutcome outcome;
-    const std::optional<std::string> path = find_executable(program);
+    const std::optional<std::string> path = process::find_executable(program);
     if (!path) {
         outcome.error = program + ": not found in PATH";
         return outcome;
