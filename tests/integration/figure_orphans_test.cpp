@@ -22,17 +22,11 @@
 namespace {
 
 namespace fs = std::filesystem;
+using mhb::test_support::process_ended;
 using mhb::test_support::wait_until;
 using mhb::testing_cli::fresh;
 using mhb::testing_cli::read_text;
 using mhb::testing_cli::run_mhbench;
-
-// Whether process `pid` has ended (gone, or a zombie nobody reaped yet).
-bool ended(pid_t pid) {
-    const std::string stat = read_text("/proc/" + std::to_string(pid) + "/stat");
-    const auto paren = stat.rfind(')');
-    return stat.empty() || (paren != std::string::npos && paren + 2 < stat.size() && stat[paren + 2] == 'Z');
-}
 
 // `words` run with `variable` (NAME=value) in the environment, its output in files in `dir`; its pid.
 pid_t start(const std::vector<std::string>& words, const std::string& variable, const fs::path& dir) {
@@ -101,18 +95,19 @@ TEST(FigureOrphans, SigkillDuringFiguresLeavesNeitherTheScriptNorWhatItStarted) 
     std::istringstream(read_text(pids)) >> script >> grandchild;
     ASSERT_GT(script, 0);
     ASSERT_GT(grandchild, 0);
-    EXPECT_FALSE(ended(script));
-    EXPECT_FALSE(ended(grandchild));
+    EXPECT_FALSE(process_ended(script));
+    EXPECT_FALSE(process_ended(grandchild));
 
     ::kill(mhbench, SIGKILL);
     int status = 0;
     ::waitpid(mhbench, &status, 0);
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
-    EXPECT_TRUE(wait_until([&] { return ended(script); }, 5.0)) << "the figure script outlived mhbench";
-    EXPECT_TRUE(wait_until([&] { return ended(grandchild); }, 5.0))
+    EXPECT_TRUE(wait_until([&] { return process_ended(script); }, 5.0))
+        << "the figure script outlived mhbench";
+    EXPECT_TRUE(wait_until([&] { return process_ended(grandchild); }, 5.0))
         << "the program the figure script started outlived mhbench";
     for (const pid_t left : {script, grandchild}) // whatever the outcome, nothing of the test stays
-        if (!ended(left))
+        if (!process_ended(left))
             ::kill(left, SIGKILL);
 }
 
