@@ -21,6 +21,7 @@
 
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/core/text_excerpt.hpp"
+#include "problems/external/child_link.hpp"
 #include "problems/external/command.hpp"
 #include "problems/external/handshake.hpp"
 #include "problems/external/protocol_json.hpp"

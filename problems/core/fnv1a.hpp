@@ -1,8 +1,8 @@
 // FNV-1a, 64 bits: the one hash of text whose value mhbench keeps (the seeds of random streams
 // through stable_hash in rng.hpp, the function ids of the IOHprofiler export). FNV-1a because its
 // value is the same across runs, compilers, standard libraries and platforms, unlike std::hash,
-// and it takes a few lines. Header-only, so that results/ (which links no other mhbench library)
-// uses the same code; rng.cpp's stable_hash, part of the plug-in contract, is this function.
+// and it takes a few lines. Header-only: results/ uses the same code, and rng.cpp's stable_hash,
+// part of the plug-in contract, is this function.
 #pragma once
 
 #include <cstdint>

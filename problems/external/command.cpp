@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "problems/core/executable_path.hpp"
+#include "problems/core/process/executable_path.hpp"
 #include "problems/core/sha256.hpp"
 
 namespace mhb::external {
@@ -72,7 +72,7 @@ std::vector<std::string> code_files(const std::vector<std::string>& words) {
     std::vector<std::string> files = code_words(words);
     if (files.empty()) {
         // `cmd=mymodel` found in PATH: its executable is all there is.
-        const std::string path = find_executable(words.front()).value_or(std::string());
+        const std::string path = process::find_executable(words.front()).value_or(std::string());
         if (!path.empty() && is_file(path))
             files.push_back(path);
     }

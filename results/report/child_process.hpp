@@ -1,10 +1,9 @@
-// A helper program (the figure script's Python) run as a child process: no shell, the arguments
-// passed as they are (paths with spaces or quotes are safe), and its life tied to ours. The child
-// gets SIGKILL when the thread that started it dies, however it dies (SIGKILL included: Linux's
-// PR_SET_PDEATHSIG), so a killed mhbench never leaves it behind; SIGINT or SIGTERM that reach
-// mhbench while it waits are passed on to the child as SIGTERM (SIGKILL at the second), and the
-// outcome says that a stop was asked for, so the caller can finish cleanly instead of dying.
-// Linux only (prctl), like the rest of mhbench.
+// A helper program (the figure scripts' Python) run to completion as a child process, on top of
+// problems/core/process/ (no shell, the arguments passed as they are, its own process group, and
+// its life tied to ours: neither it nor what it starts outlives a mhbench killed by any signal,
+// SIGKILL included). SIGINT or SIGTERM that reach mhbench while it waits are passed on to the
+// child as SIGTERM (SIGKILL at the second), and the outcome says that a stop was asked for, so the
+// caller can finish cleanly instead of dying.
 #pragma once
 
 #include <string>
@@ -29,7 +28,8 @@ struct ChildOutcome {
 // it as SIGTERM from here, or through its own handler if it installs one (plot_study.py does),
 // never as a KeyboardInterrupt in the middle of the interpreter's start-up. While it runs, this
 // process handles SIGINT and SIGTERM (unless they were ignored) and restores the previous handlers
-// afterwards. One child at a time: concurrent calls wait for each other.
+// afterwards. Once it has exited, whatever it started and left running is killed with its group.
+// One child at a time: concurrent calls wait for each other.
 ChildOutcome run_child_process(const std::string& program, const std::vector<std::string>& arguments,
                                bool capture_output);
 

@@ -14,10 +14,11 @@
 // convenience: a plotting script that fails is reported in one line on `errors` ("figures
 // failed: ...", its whole output kept in figures/plot_study.log) and the report still succeeds.
 // The script runs as a child process tied to this one (results/report/child_process.hpp): killing
-// mhbench, even with SIGKILL, ends it too, and it writes each figure under a temporary name then
-// renames it, so a stop at any moment leaves whole files only (every other report file is written
-// by write_file_atomically). Ctrl-C (SIGINT) or SIGTERM while it draws stops it quietly: the report
-// says so in one line on `errors` and returns interrupted (ReportOutcome).
+// mhbench, even with SIGKILL, ends it and whatever it started, and it writes each figure under a
+// temporary name then renames it, so a stop at any moment leaves whole files only (every other
+// report file is written by write_file_atomically). Ctrl-C (SIGINT) or SIGTERM while it draws
+// stops it quietly: the report says so in one line on `errors` and returns interrupted
+// (ReportOutcome).
 #pragma once
 
 #include <atomic>

@@ -1,7 +1,7 @@
 // CRC-32C (Castagnoli, the polynomial of iSCSI, ext4 and SSE4.2's crc32 instruction): the
-// checksum of each record in store.bin. results/ depends on no other mhbench library, so it keeps
-// its own small checksum rather than the SHA-256 of problems/; a CRC detects every burst of up to
-// 32 flipped bits, which is what a damaged sector or a stray write leaves.
+// checksum of each record in store.bin: small and fast, where the SHA-256 of problems/core/ would
+// be neither; a CRC detects every burst of up to 32 flipped bits, which is what a damaged sector
+// or a stray write leaves.
 #pragma once
 
 #include <cstdint>

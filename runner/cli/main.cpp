@@ -60,10 +60,10 @@ void print_usage(std::ostream& out) {
 
 // A write to a pipe whose reader is gone must fail (EPIPE) where it happens, not raise a SIGPIPE
 // that ends mhbench without a word and loses its stdout: an external program that exits before
-// reading all it was sent (problems/external/child_link.cpp), or a reader of mhbench's own stdout
-// that stops early (`mhbench list | head -1`). Set first, before any thread exists; every child
-// gets the default back before exec (child_link.cpp, results/report/child_process.cpp, xdg-open in
-// report_command.cpp), since an ignored signal stays ignored across exec.
+// reading all it was sent (problems/core/process/child_process.cpp), or a reader of mhbench's own
+// stdout that stops early (`mhbench list | head -1`). Set first, before any thread exists; every
+// child gets the default back before exec (problems/core/process/: every program mhbench starts),
+// since an ignored signal stays ignored across exec.
 void ignore_sigpipe() {
     struct sigaction ignore {};
     ignore.sa_handler = SIG_IGN;

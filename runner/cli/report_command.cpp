@@ -2,16 +2,14 @@
 // from its directory alone. Thin: parses the command line, loads the study, calls build_report.
 #include <algorithm>
 #include <boost/program_options.hpp>
-#include <csignal>
 #include <cstdlib>
-#include <fcntl.h>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
+#include "problems/core/process/detached_program.hpp"
+#include "problems/core/process/executable_path.hpp"
 #include "results/html/html_report.hpp"
 #include "results/report/report.hpp"
 #include "results/store/store.hpp"
@@ -26,56 +24,23 @@ namespace po = boost::program_options;
 
 namespace {
 
-// `program` as found in PATH, or empty.
-std::filesystem::path find_in_path(const std::string& program) {
-    const char* path = std::getenv("PATH");
-    std::stringstream dirs(path != nullptr ? path : "");
-    std::error_code ec;
-    for (std::string dir; std::getline(dirs, dir, ':');) {
-        const std::filesystem::path candidate = std::filesystem::path(dir.empty() ? "." : dir) / program;
-        if (std::filesystem::is_regular_file(candidate, ec) && ::access(candidate.c_str(), X_OK) == 0)
-            return candidate;
-    }
-    return {};
-}
-
 // --open: the page in the desktop's browser, when there is a desktop. Never an error: without a
 // display or xdg-open the path printed above is all the user needs. xdg-open runs detached (its
 // own session, output discarded, not waited for), so a browser that stays open does not keep
 // `mhbench report` waiting, and a browser's complaints do not mix with the report.
 void open_in_browser(const std::filesystem::path& page) {
     const bool display = std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr;
-    const std::filesystem::path opener = display ? find_in_path("xdg-open") : std::filesystem::path();
+    const std::string opener = display ? process::find_executable("xdg-open").value_or("") : "";
     if (opener.empty()) {
         std::cout << "--open: "
                   << (display ? "xdg-open not found" : "no display (DISPLAY and WAYLAND_DISPLAY unset)")
                   << "; open " << file_url(page) << " in a browser\n";
         return;
     }
-    const std::string url = file_url(page); // before fork: the child only makes system calls
+    const std::string url = file_url(page);
     std::cout << "--open: opening " << url << " with xdg-open\n";
     std::cout.flush();
-    const pid_t child = ::fork();
-    if (child == 0) { // a grandchild runs xdg-open, so that nobody has to wait for it
-        ::setsid();
-        if (::fork() == 0) {
-            const int null = ::open("/dev/null", O_RDWR);
-            if (null >= 0) {
-                ::dup2(null, 0);
-                ::dup2(null, 1);
-                ::dup2(null, 2);
-            }
-            // mhbench ignores SIGPIPE (main.cpp), and an ignored signal stays ignored across exec.
-            struct sigaction by_default {};
-            by_default.sa_handler = SIG_DFL;
-            sigemptyset(&by_default.sa_mask);
-            ::sigaction(SIGPIPE, &by_default, nullptr);
-            ::execl(opener.c_str(), "xdg-open", url.c_str(), static_cast<char*>(nullptr));
-        }
-        ::_exit(0);
-    }
-    if (child > 0)
-        ::waitpid(child, nullptr, 0);
+    process::start_detached({opener, url});
 }
 
 // Whether `dir` holds a study's records (finished or not): a report written there would

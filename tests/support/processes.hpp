@@ -42,6 +42,14 @@ inline std::vector<pid_t> processes_with(const std::string& marker) {
     return processes_with(std::vector<std::string>{marker});
 }
 
+// Whether process `pid` has ended: gone, or a zombie that nobody has reaped yet (an orphan whose
+// reaper is slow, or none in a container).
+inline bool process_ended(pid_t pid) {
+    const std::string stat = read_text("/proc/" + std::to_string(pid) + "/stat");
+    const auto paren = stat.rfind(')');
+    return stat.empty() || (paren != std::string::npos && paren + 2 < stat.size() && stat[paren + 2] == 'Z');
+}
+
 // Polls `condition` every 10 ms for up to `seconds`; its last value.
 template <class Condition> bool wait_until(Condition condition, double seconds) {
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);

@@ -1,20 +1,13 @@
-// The file exec would run for a program name: the name itself when it holds a '/', else the first
-// executable regular file of that name in PATH (an empty entry of PATH is the current folder, as
-// for execvp). Header-only, so that results/ (which links no other mhbench library) finds the
-// figures' Python the way problems/external/ finds an external program. Call it before fork:
-// getenv is not async-signal-safe.
-#pragma once
+#include "problems/core/process/executable_path.hpp"
 
 #include <algorithm>
 #include <cstdlib>
-#include <optional>
-#include <string>
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace mhb {
+namespace mhb::process {
 
-inline std::optional<std::string> find_executable(const std::string& program) {
+std::optional<std::string> find_executable(const std::string& program) {
     if (program.empty())
         return std::nullopt;
     if (program.find('/') != std::string::npos)
@@ -35,4 +28,4 @@ inline std::optional<std::string> find_executable(const std::string& program) {
     return std::nullopt;
 }
 
-} // namespace mhb
+} // namespace mhb::process
