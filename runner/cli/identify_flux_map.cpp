@@ -14,6 +14,7 @@
 #include "problems/fluxmap/flux_map.hpp"
 #include "problems/fluxmap/residual_map.hpp"
 #include "problems/problem_registry.hpp"
+#include "runner/cli/command.hpp"
 #include "runner/cli/flux_map_files.hpp"
 #include "runner/cli/flux_map_report.hpp"
 #include "runner/single_problem/flux_map_search.hpp"
@@ -22,6 +23,8 @@ namespace mhb::cli {
 namespace {
 
 constexpr double reached_relative = 1e-6; // a start within this of the best reached it
+constexpr int residual_columns = 7;       // i_d bins of the residual map (a terminal's width)
+constexpr int residual_rows = 9;          // i_q bins
 
 // --bounds holds `name=lo:hi` items for the model's parameters only: the fluxmap family's other
 // keys (data, synthetic, ...) would change the problem under the fit.
@@ -87,7 +90,7 @@ int identify_flux_map(const FluxMapIdentifyOptions& o) {
                                static_cast<int>(reached.size()),
                                shipped ? std::string(fluxmap::baldor_map_name) + " (shipped)" : o.map,
                                problem->known_optimum(),
-                               fluxmap::residual_map(data, residuals, 7, 9),
+                               fluxmap::residual_map(data, residuals, residual_columns, residual_rows),
                                problem->warnings()};
     print_flux_map_report(std::cout, report);
     if (!o.out.empty())
@@ -96,7 +99,7 @@ int identify_flux_map(const FluxMapIdentifyOptions& o) {
         std::cout
             << "\nWith --out DIR: the estimates, every point's current error and the fitted curves as CSV, "
                "and a figure.\n";
-    return 0;
+    return exit_ok;
 }
 
 } // namespace mhb::cli
