@@ -26,9 +26,17 @@ std::string number(const char* format, double value) {
     return buf;
 }
 
+// A parameter within 1e-9 of the box's width of a bound is held there by the box.
+double bound_tolerance(const Box& box, Eigen::Index j) {
+    return 1e-9 * (box.upper[j] - box.lower[j]);
+}
+
+bool on_lower_bound(const Box& box, Eigen::Index j, double value) {
+    return value <= box.lower[j] + bound_tolerance(box, j);
+}
+
 bool on_bound(const Box& box, Eigen::Index j, double value) {
-    const double tolerance = 1e-9 * (box.upper[j] - box.lower[j]);
-    return value <= box.lower[j] + tolerance || value >= box.upper[j] - tolerance;
+    return on_lower_bound(box, j, value) || value >= box.upper[j] - bound_tolerance(box, j);
 }
 
 // Lag-1 autocorrelation of the residuals of both axes, each axis's mean removed, pooled.
@@ -157,7 +165,7 @@ FitAssessment assess_fit(const CurrentMap& map, const Box& box, const Eigen::Vec
             a.spread = std::max(a.spread, std::fabs(x[j] - theta[j]));
         a.on_bound = on_bound(box, j, theta[j]);
         if (a.on_bound) {
-            const bool lower = theta[j] <= box.lower[j] + 1e-9 * (box.upper[j] - box.lower[j]);
+            const bool lower = on_lower_bound(box, j, theta[j]);
             a.standard_error = a.relative_error = std::numeric_limits<double>::quiet_NaN();
             a.verdict = Determination::not_determined;
             a.reason = std::string("on its ") + (lower ? "lower" : "upper") + " bound " +
