@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "results/store/run_record.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_files.hpp"
 
 namespace mhb {
 
@@ -40,6 +40,9 @@ inline constexpr RenderedFileText rendered_file_texts[] = {
 
 // The lines a run contributes to each file, for the study's parameter columns.
 RenderedLines render_run(const RunRecord& r, double wall_seconds, const std::vector<std::string>& columns);
+
+// The header of runs.csv for the given parameter columns.
+std::string runs_csv_header(const std::vector<std::string>& parameter_columns);
 
 // The header line of each file.
 RenderedLines rendered_headers(const std::vector<std::string>& parameter_columns);

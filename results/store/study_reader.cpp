@@ -1,4 +1,4 @@
-// load_study: a finished study directory read back into run records (see store.hpp).
+// load_study: a finished study directory read back into run records (see study_data.hpp).
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -8,8 +8,10 @@
 
 #include "results/store/crc32c.hpp"
 #include "results/store/csv.hpp"
-#include "results/store/store.hpp"
 #include "results/store/store_check.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_files.hpp"
+#include "results/store/study_marker.hpp"
 
 namespace mhb {
 namespace fs = std::filesystem;

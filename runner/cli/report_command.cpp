@@ -14,7 +14,8 @@
 
 #include "results/html/html_report.hpp"
 #include "results/report/report.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_files.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/execution/companion_files.hpp"
