@@ -41,9 +41,6 @@ inline constexpr RenderedFileText rendered_file_texts[] = {
 // The lines a run contributes to each file, for the study's parameter columns.
 RenderedLines render_run(const RunRecord& r, double wall_seconds, const std::vector<std::string>& columns);
 
-// The header of runs.csv for the given parameter columns.
-std::string runs_csv_header(const std::vector<std::string>& parameter_columns);
-
 // The header line of each file.
 RenderedLines rendered_headers(const std::vector<std::string>& parameter_columns);
 
