@@ -170,11 +170,18 @@ bool decode_ok(ByteReader& in, std::span<const RunField> fields) {
 }
 
 void encode_field_sections(ByteWriter& out, const RunRecord& r, std::span<const RunField> fields) {
+    static const RunRecord defaults;
     for (const RunField& field : fields) {
         if (field.stored.section == 0)
             continue;
         ByteWriter body;
         encode_field(body, r, field);
+        // A value that is the default needs no section (it reads back the same without one), and a
+        // record holding only defaults in its added fields keeps the bytes older builds wrote.
+        ByteWriter unset;
+        encode_field(unset, defaults, field);
+        if (body.bytes() == unset.bytes())
+            continue;
         out.u64(field.stored.section);
         out.text(body.bytes());
     }

@@ -22,7 +22,7 @@ void decode_core_fields(ByteReader& in, RunRecord& r, std::span<const RunField> 
 // The core fields up to RunRecord::ok read, the others skipped, and ok returned.
 bool decode_ok(ByteReader& in, std::span<const RunField> fields = run_fields);
 
-// Each field with a section, as its tag and its value's bytes.
+// Each field with a section whose value is not its default, as its tag and its value's bytes.
 void encode_field_sections(ByteWriter& out, const RunRecord& r,
                            std::span<const RunField> fields = run_fields);
 // `body` decoded into the field whose section is `tag`; any other tag is a section a newer mhbench

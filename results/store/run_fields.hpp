@@ -44,8 +44,9 @@ using RunFieldMember =
                  std::vector<std::string> RunRecord::*, std::optional<double> (RunRecord::*)() const>;
 
 // Where a field is in store.bin's record (record_codec.hpp). Format 3 fixed the record's first
-// fields and their order, its core; a field added since is a section of its own, which records
-// stored before it lack (they read it as the member's default) and older mhbench builds skip.
+// fields and their order, its core; a field added since is a section of its own, written when its
+// value is not the default: records without it (stored before it existed, or holding the default)
+// read it as the member's default, and older mhbench builds skip it.
 struct StorePlace {
     int core = -1;             // position among the core fields, from 0
     std::uint64_t section = 0; // the section's tag: 2, 3, ... (1 is the improvement trace)

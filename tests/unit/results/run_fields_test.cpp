@@ -195,6 +195,9 @@ TEST(RunFields, AFieldInASectionComesBackAndIsSkippedByABuildWithoutIt) {
     decode_field_section(tag + 1, body, other, added); // another build's section: skipped
     EXPECT_FALSE(other.evaluations_to_target.has_value());
     EXPECT_THROW(decode_field_section(tag, body + "x", back, added), std::runtime_error);
+    ByteWriter none; // the default needs no section: the record keeps the bytes an older build wrote
+    encode_field_sections(none, RunRecord{}, added);
+    EXPECT_TRUE(none.bytes().empty());
 
     // A record carrying the section, read by this build's list (which has no such section).
     std::string record = encode_record(RunRecord{}, 1.0);
