@@ -1,8 +1,9 @@
 // The fields of a run's record (RunRecord), declared once: each field's column in runs.csv, its
 // place in store.bin's record and how runs.csv shows it. The record codec (run_field_codec.cpp),
 // the runs.csv writer and its reader (runs_csv.cpp) iterate this list instead of naming fields,
-// and check it at compile time. A new field is one line here, where its column goes in runs.csv,
-// stored in a section of its own (`in_section(k)`, k the next free tag), plus its member in
+// and check it at compile time. A new field is one line here, where its column goes in runs.csv
+// (not between best_x and message: older builds take what is there for parameter columns), stored
+// in a section of its own (`in_section(k)`, k the next free tag), plus its member in
 // run_record.hpp and the code that computes it; the tests that iterate the list
 // (tests/unit/results/run_fields_test.cpp) cover it without being edited.
 //

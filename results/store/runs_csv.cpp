@@ -17,6 +17,24 @@ namespace {
 
 using ParameterNames = std::vector<std::string> RunRecord::*;
 
+// The fields whose columns are on either side of the parameter columns (best_x and message), by
+// their index in run_fields: the reader finds the parameter columns between them.
+struct Neighbours {
+    std::size_t before = 0;
+    std::size_t after = 0;
+};
+constexpr Neighbours parameter_neighbours = [] {
+    std::size_t names = 0;
+    while (run_fields[names].shown != Shown::as_parameters)
+        ++names;
+    Neighbours n{names, names + 1};
+    while (n.before > 0 && !has_own_column(run_fields[n.before]))
+        --n.before;
+    while (n.after + 1 < std::size(run_fields) && !has_own_column(run_fields[n.after]))
+        ++n.after;
+    return n;
+}();
+
 // What the writer and the reader below take for granted of run_fields.
 consteval bool runs_csv_can_show_each() {
     std::size_t parameter_blocks = 0;
@@ -37,13 +55,17 @@ consteval bool runs_csv_can_show_each() {
                 std::string_view(other.column) == std::string_view(field.column))
                 return false;
     }
-    return parameter_blocks == 1 && has_own_column(run_fields[0]);
+    // Builds from before a field was added find the parameter columns between the same two.
+    const RunField& before = run_fields[parameter_neighbours.before];
+    const RunField& after = run_fields[parameter_neighbours.after];
+    return parameter_blocks == 1 && has_own_column(run_fields[0]) && has_own_column(before) &&
+           has_own_column(after) && !may_lack_column(before) && !may_lack_column(after);
 }
 static_assert(runs_csv_can_show_each(),
               "run_fields: each field with a column of its own and a name no other has, the first among "
               "them; one list of parameter names (Shown::as_parameters), the numbers shown with them "
-              "(Shown::in_parameters); a bool only as the words ok and failed (after status, the "
-              "fields shown when ok)");
+              "(Shown::in_parameters), with a column in every runs.csv on either side; a bool only "
+              "as the words ok and failed (after status, the fields shown when ok)");
 
 constexpr const char* ok_word = "ok";
 constexpr const char* failed_word = "failed";
@@ -221,24 +243,6 @@ std::optional<std::size_t> column_of(const CsvTable& runs, const RunField& field
     return runs.column(field.column);
 }
 
-// The parameter columns lie between the columns of the fields around the parameter names.
-constexpr std::ptrdiff_t parameter_names = [] {
-    std::ptrdiff_t i = 0;
-    while (run_fields[i].shown != Shown::as_parameters)
-        ++i;
-    return i;
-}();
-
-// The column in `runs` of the first field met from run_fields[i] on, stepping by `step`, that has
-// a column of its own there; none when the list ends first.
-std::optional<std::size_t> nearest_column(const CsvTable& runs, std::ptrdiff_t i, std::ptrdiff_t step) {
-    for (; i >= 0 && i < std::ssize(run_fields); i += step)
-        if (has_own_column(run_fields[i]))
-            if (const auto column = column_of(runs, run_fields[i]))
-                return column;
-    return std::nullopt;
-}
-
 } // namespace
 
 std::string runs_csv_header(const std::vector<std::string>& parameter_columns) {
@@ -272,9 +276,9 @@ std::string runs_csv_line(const RunRecord& r, const std::vector<std::string>& pa
 }
 
 RunsCsvLayout runs_csv_layout(const CsvTable& runs) {
-    const auto before = nearest_column(runs, parameter_names - 1, -1);
-    const auto after = nearest_column(runs, parameter_names + 1, 1);
-    RunsCsvLayout layout{before ? *before + 1 : 0, after.value_or(runs.header.size()), {}};
+    RunsCsvLayout layout{runs.column(run_fields[parameter_neighbours.before].column) + 1,
+                         runs.column(run_fields[parameter_neighbours.after].column),
+                         {}};
     if (layout.end < layout.first || (layout.end - layout.first) % layout.per_parameter != 0)
         throw std::runtime_error(runs.path.string() + ": parameter columns are malformed");
     for (std::size_t c = layout.first; c < layout.end; c += layout.per_parameter)
