@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "results/exports/ioh_export.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
 
 namespace mhb {
 

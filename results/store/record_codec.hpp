@@ -5,8 +5,10 @@
 //
 // The format is little-endian, length-prefixed and versioned by the store's block header; it is
 // not meant to be read by anything but decode_record. It grows by sections rather than by a new
-// block version: after the fields every record has always had (up to wall_seconds) come sections,
-// each a tag and a length-prefixed body, then the tag 0. Tag 1 is the ImprovementTrace. A reader
+// block version: after the fields every record has always had come sections, each a tag and a
+// length-prefixed body, then the tag 0. Tag 1 is the ImprovementTrace, tags 2 and up each a field
+// of run_fields.hpp added since. The fields every record has had are format 3's core fields of
+// run_fields.hpp (in their core order), the curve, the checkpoints and wall_seconds. A reader
 // skips a section it does not know, and mhbench builds from before sections (whose records end at
 // wall_seconds, as the blocks they stored do) read newer blocks and ignore the sections; a new
 // block version would instead have made them cut every newer block off a store as a torn write.
@@ -15,6 +17,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "results/store/run_record.hpp"
 
@@ -27,6 +30,7 @@ public:
     void i64(std::int64_t value) { u64(static_cast<std::uint64_t>(value)); }
     void f64(double value);
     void text(std::string_view value);
+    void doubles(const std::vector<double>& values); // the count, then each value
     [[nodiscard]] const std::string& bytes() const { return bytes_; }
     [[nodiscard]] std::string take() { return std::move(bytes_); }
 
@@ -43,6 +47,10 @@ public:
     double f64();
     std::string text();
     void skip_text(); // a text() not kept
+    std::vector<double> doubles();
+    // A count of what follows, bounded so that corrupt bytes give an error rather than a huge
+    // allocation.
+    std::uint64_t count();
     [[nodiscard]] bool at_end() const { return position_ == bytes_.size(); }
 
 private:

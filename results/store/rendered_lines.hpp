@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "results/store/run_record.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_files.hpp"
 
 namespace mhb {
 

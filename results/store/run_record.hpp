@@ -36,6 +36,9 @@ struct ImprovementTrace {
     double last_f = std::numeric_limits<double>::quiet_NaN();
 };
 
+// Its fields are listed once more, each with its runs.csv column and its place in store.bin, in
+// run_fields.hpp: a member missing there is neither stored nor in runs.csv. The curve, checkpoints
+// and improvements are not in that list: they have code and files of their own.
 struct RunRecord {
     std::int64_t run_id = 0; // position in the study's run list, 0-based
     std::string algorithm;   // canonical spec, e.g. "itlbo:obl=off"

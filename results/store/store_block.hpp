@@ -15,10 +15,15 @@
 #include <string>
 #include <string_view>
 
+#include "results/store/run_key.hpp"
 #include "results/store/run_record.hpp"
-#include "results/store/store.hpp"
 
 namespace mhb {
+
+// The framing of store.bin's blocks (above): format 4 adds a checksum to each; blocks
+// of format 3 carry none and are still read. Not part of a run's identity: a checksum changes no
+// value, so the runs of a format-3 store are reused as they are.
+inline constexpr int store_block_format = 4;
 
 inline constexpr std::string_view block_magic = "MHBRUN3\n";
 inline constexpr std::string_view block_end = "MHBEND3\n";

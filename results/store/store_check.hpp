@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
 
 namespace mhb {
 

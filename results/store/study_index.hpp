@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "results/store/run_record.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
 
 namespace mhb {
 

@@ -1,10 +1,12 @@
 // The marker .mhbench-study (its text: format, study.ini checksum, run count, rendered files) and
-// what makes a directory a study (see store.hpp).
+// what makes a directory a study (see study_marker.hpp).
+#include "results/store/study_marker.hpp"
+
 #include <filesystem>
 #include <string>
 
 #include "results/store/crc32c.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_files.hpp"
 
 namespace mhb {
 namespace fs = std::filesystem;

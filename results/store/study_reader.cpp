@@ -1,5 +1,4 @@
-// load_study: a finished study directory read back into run records (see store.hpp).
-#include <charconv>
+// load_study: a finished study directory read back into run records (see study_data.hpp).
 #include <cmath>
 #include <fstream>
 #include <optional>
@@ -8,30 +7,16 @@
 
 #include "results/store/crc32c.hpp"
 #include "results/store/csv.hpp"
-#include "results/store/store.hpp"
+#include "results/store/runs_csv.hpp"
 #include "results/store/store_check.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_files.hpp"
+#include "results/store/study_marker.hpp"
 
 namespace mhb {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::vector<double> split_numbers(const CsvTable& t, std::size_t row, std::size_t column) {
-    std::vector<double> values;
-    const std::string& text = t.rows[row][column];
-    std::size_t i = 0;
-    while (i < text.size()) {
-        const auto j = std::min(text.find(' ', i), text.size());
-        double v = 0;
-        const auto [ptr, ec] = std::from_chars(text.data() + i, text.data() + j, v);
-        if (ec != std::errc() || ptr != text.data() + j)
-            throw std::runtime_error(t.path.string() + ", line " + std::to_string(t.line_numbers[row]) +
-                                     ", column '" + t.header[column] + "': not a list of numbers");
-        values.push_back(v);
-        i = j + 1;
-    }
-    return values;
-}
 
 std::int64_t find_run(const std::map<std::int64_t, std::size_t>& index, const CsvTable& t, std::size_t row) {
     const std::int64_t id = t.integer(row, t.column("run_id"));
@@ -119,89 +104,15 @@ void read_study_description(const fs::path& dir, StudyData& data) {
     }
 }
 
-// Where runs.csv's parameter columns are: P, P_true, P_opt and P_err_pct for each named parameter,
-// from the column after best_x up to message.
-struct ParameterColumns {
-    static constexpr std::size_t per_parameter = 4;
-    std::size_t first = 0;
-    std::size_t message = 0;
-};
-
-ParameterColumns parameter_columns(const CsvTable& runs, std::vector<std::string>& names) {
-    ParameterColumns columns{runs.column("best_x") + 1, runs.column("message")};
-    if (columns.message < columns.first || (columns.message - columns.first) % columns.per_parameter != 0)
-        throw std::runtime_error(runs.path.string() + ": parameter columns are malformed");
-    for (std::size_t c = columns.first; c < columns.message; c += columns.per_parameter)
-        names.push_back(runs.header[c]);
-    return columns;
-}
-
-// The named parameters a run has values for, with their true values and optima when it has them
-// for all.
-void read_parameters(const CsvTable& runs, std::size_t row, const ParameterColumns& columns, RunRecord& r) {
-    bool all_truths = true;
-    bool all_optima = true;
-    for (std::size_t c = columns.first; c < columns.message; c += columns.per_parameter) {
-        if (runs.rows[row][c].empty())
-            continue;
-        r.parameter_names.push_back(runs.header[c]);
-        const auto truth = runs.optional_number(row, c + 1);
-        all_truths = all_truths && truth.has_value();
-        r.true_parameters.push_back(truth.value_or(0.0));
-        const auto optimum = runs.optional_number(row, c + 2);
-        all_optima = all_optima && optimum.has_value();
-        r.x_opt.push_back(optimum.value_or(0.0));
-    }
-    if (!all_truths)
-        r.true_parameters.clear();
-    if (!all_optima)
-        r.x_opt.clear();
-}
-
-// One row of runs.csv.
-RunRecord read_run(const CsvTable& runs, std::size_t row, const ParameterColumns& columns) {
-    const auto col = [&](const char* name) { return runs.column(name); };
-    const auto refuse = [&](const std::string& what) {
-        return std::runtime_error(runs.path.string() + ", line " + std::to_string(runs.line_numbers[row]) +
-                                  what);
-    };
-    RunRecord r;
-    r.run_id = runs.integer(row, col("run_id"));
-    r.algorithm = runs.rows[row][col("algorithm")];
-    r.problem = runs.rows[row][col("problem")];
-    // Studies written before budgets were recorded have no budget column.
-    if (runs.has_column("budget"))
-        r.budget = runs.rows[row][col("budget")];
-    r.run_index = runs.integer(row, col("run"));
-    const std::string& seed = runs.rows[row][col("seed")];
-    if (std::from_chars(seed.data(), seed.data() + seed.size(), r.seed).ec != std::errc())
-        throw refuse(", column 'seed': not an unsigned integer");
-    const std::string& status = runs.rows[row][col("status")];
-    if (status != "ok" && status != "failed")
-        throw refuse(", column 'status': '" + status + "' is not ok or failed");
-    r.ok = status == "ok";
-    r.evaluations = runs.integer(row, col("evaluations"));
-    r.iterations = runs.integer(row, col("iterations"));
-    if (r.ok)
-        r.best_f = runs.number(row, col("best_f"));
-    r.f_opt = runs.optional_number(row, col("f_opt"));
-    // Written as an integer; read as one, so that no text (1e300, nan) becomes a cast out of range.
-    if (!runs.rows[row][col("evals_to_target")].empty())
-        r.evaluations_to_target = runs.integer(row, col("evals_to_target"));
-    r.best_x = split_numbers(runs, row, col("best_x"));
-    read_parameters(runs, row, columns, r);
-    r.message = runs.rows[row][columns.message];
-    return r;
-}
-
 // A run's position in StudyData::runs, by run_id.
 using RunPositions = std::map<std::int64_t, std::size_t>;
 
 RunPositions read_runs(const CsvTable& runs, StudyData& data) {
-    const ParameterColumns columns = parameter_columns(runs, data.parameter_columns);
+    RunsCsvLayout layout = runs_csv_layout(runs);
+    data.parameter_columns = std::move(layout.parameters);
     RunPositions index;
     for (std::size_t row = 0; row < runs.rows.size(); ++row) {
-        RunRecord r = read_run(runs, row, columns);
+        RunRecord r = read_runs_csv_row(runs, row, layout);
         if (index.count(r.run_id) != 0)
             throw std::runtime_error(runs.path.string() + ", line " + std::to_string(runs.line_numbers[row]) +
                                      ": run_id " + std::to_string(r.run_id) + " appears twice");

@@ -1,6 +1,6 @@
 // StudyWriter::finish(): the sorted result files (runs.csv, curves.csv, checkpoints.csv,
 // trajectories.csv, improvements.csv, timings.csv) rendered from store.bin, and the marker that
-// names them (see store.hpp).
+// names them (see study_writer.hpp and study_marker.hpp).
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -18,8 +18,11 @@
 #include "results/store/durable_file.hpp"
 #include "results/store/record_codec.hpp"
 #include "results/store/rendered_lines.hpp"
-#include "results/store/store.hpp"
+#include "results/store/run_key.hpp"
 #include "results/store/store_block.hpp"
+#include "results/store/study_files.hpp"
+#include "results/store/study_marker.hpp"
+#include "results/store/study_writer.hpp"
 #include "results/store/study_writer_internal.hpp"
 
 namespace mhb {

@@ -1,6 +1,8 @@
 // StudyWriter: preparing a study directory (resuming and growing a study) and appending finished
-// runs to its store.bin, synced as the policy says (see store.hpp). Opening an existing store is in
+// runs to its store.bin, synced as the policy says (see study_writer.hpp). Opening an existing store is in
 // study_writer_resume.cpp, rendering the result files in study_rendering.cpp.
+#include "results/store/study_writer.hpp"
+
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -8,10 +10,13 @@
 #include <stdexcept>
 #include <unistd.h>
 
+#include "results/store/algorithm_info.hpp"
 #include "results/store/csv.hpp"
 #include "results/store/durable_file.hpp"
-#include "results/store/store.hpp"
+#include "results/store/run_key.hpp"
 #include "results/store/store_block.hpp"
+#include "results/store/study_files.hpp"
+#include "results/store/study_marker.hpp"
 
 namespace mhb {
 namespace fs = std::filesystem;

@@ -1,6 +1,6 @@
 // What a StudyWriter finds in an existing store.bin when it opens a study: the blocks scanned and
 // indexed (a half-written end cut off), the stored runs of this study, the runs that changed under
-// a stored one, and the damaged records to warn about (see store.hpp).
+// a stored one, and the damaged records to warn about (see study_writer.hpp).
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -10,9 +10,11 @@
 #include <stdexcept>
 
 #include "results/store/record_codec.hpp"
-#include "results/store/store.hpp"
+#include "results/store/run_key.hpp"
 #include "results/store/store_block.hpp"
 #include "results/store/store_scan.hpp"
+#include "results/store/study_files.hpp"
+#include "results/store/study_writer.hpp"
 
 namespace mhb {
 namespace fs = std::filesystem;

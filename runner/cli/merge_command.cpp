@@ -12,7 +12,9 @@
 
 #include "results/report/report.hpp"
 #include "results/store/csv.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_files.hpp"
+#include "results/store/study_writer.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/distribution/shards.hpp"

@@ -10,11 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "results/store/store.hpp"
 #include "runner/execution/parallel_runner.hpp"
 #include "runner/study/study.hpp"
 
 namespace mhb {
+
+class StudyWriter; // results/store/study_writer.hpp
 
 // The process count a launcher (mpirun, mpiexec, srun -n N: runner/distribution/launcher_environment.hpp)
 // gave this process in its environment, or 0 when none started it.

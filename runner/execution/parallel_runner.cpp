@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "results/store/study_writer.hpp"
 #include "runner/run/execute_run.hpp"
 
 namespace mhb {

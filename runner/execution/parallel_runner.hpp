@@ -14,10 +14,11 @@
 #include <optional>
 #include <vector>
 
-#include "results/store/store.hpp"
 #include "runner/study/study.hpp"
 
 namespace mhb {
+
+class StudyWriter; // results/store/study_writer.hpp
 
 struct RunnerOptions {
     int threads = 0;                         // 0: every hardware thread

@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <string>
 
-#include "results/store/store.hpp"
+#include "results/store/run_key.hpp"
 #include "runner/study/study.hpp"
 
 namespace mhb {

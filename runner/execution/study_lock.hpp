@@ -17,7 +17,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "results/store/store.hpp"
+#include "results/store/study_files.hpp"
 
 namespace mhb {
 

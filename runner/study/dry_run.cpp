@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "results/analysis/cec_protocol.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_files.hpp"
 #include "runner/study/calibration.hpp"
 
 namespace mhb {

@@ -23,7 +23,7 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem_registry.hpp"
-#include "results/store/store.hpp"
+#include "results/store/algorithm_info.hpp"
 #include "runner/run/execute_run.hpp"
 #include "runner/study/study_budget.hpp"
 

@@ -7,7 +7,8 @@
 
 #include "results/analysis/hypothesis_tests.hpp"
 #include "results/report/report.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_writer.hpp"
 
 namespace {
 namespace fs = std::filesystem;

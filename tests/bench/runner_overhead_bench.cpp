@@ -17,7 +17,8 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <string>
 
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_writer.hpp"
 #include "runner/distribution/shards.hpp"
 #include "runner/execution/parallel_runner.hpp"
 #include "runner/execution/run_identity.hpp"

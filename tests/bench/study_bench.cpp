@@ -12,7 +12,8 @@
 #include <filesystem>
 #include <string>
 
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_writer.hpp"
 #include "runner/execution/parallel_runner.hpp"
 #include "runner/study/study.hpp"
 #include "runner/study/study_file.hpp"

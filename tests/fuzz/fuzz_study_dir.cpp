@@ -1,4 +1,4 @@
-// Fuzzes the study-directory readers (results/store/store.hpp): the input is cut into files of a fresh
+// Fuzzes the study-directory readers (results/store/study_data.hpp): the input is cut into files of a fresh
 // temporary directory, then load_study reads it; a directory with store.bin and no runs.csv is
 // also resumed by a StudyWriter (reading store.bin), finished and read back. Bad files must give
 // std::runtime_error, never a crash.
@@ -21,7 +21,9 @@
 #include <unistd.h>
 #include <vector>
 
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_files.hpp"
+#include "results/store/study_writer.hpp"
 
 namespace {
 

@@ -9,7 +9,8 @@
 #include <unistd.h>
 
 #include "algorithms/algorithm_registry.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_writer.hpp"
 #include "runner/execution/parallel_runner.hpp"
 #include "runner/study/study.hpp"
 #include "runner/study/study_file.hpp"

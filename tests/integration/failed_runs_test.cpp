@@ -7,7 +7,7 @@
 #include <string>
 
 #include "cli_harness.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
 
 namespace {
 

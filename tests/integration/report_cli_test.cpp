@@ -10,7 +10,8 @@
 #include <unistd.h>
 
 #include "cli_harness.hpp"
-#include "results/store/store.hpp"
+#include "results/store/algorithm_info.hpp"
+#include "results/store/study_writer.hpp"
 
 namespace mhb {
 namespace {

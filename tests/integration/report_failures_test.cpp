@@ -12,7 +12,7 @@
 #include "cli_harness.hpp"
 #include "results/report/report.hpp"
 #include "results/store/csv.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_writer.hpp"
 #include "support/text.hpp"
 
 namespace mhb {

@@ -20,7 +20,8 @@
 
 #include "cli_harness.hpp"
 #include "results/report/report.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_writer.hpp"
 #include "support/files.hpp"
 #include "support/processes.hpp"
 

@@ -15,7 +15,7 @@
 #include <unistd.h>
 #include <vector>
 
-#include "results/store/store.hpp"
+#include "results/store/study_writer.hpp"
 #include "runner/distribution/mpi/mpi_runner.hpp"
 #include "runner/distribution/shards.hpp"
 #include "runner/execution/parallel_runner.hpp"

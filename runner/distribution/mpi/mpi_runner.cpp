@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "results/store/record_codec.hpp"
+#include "results/store/study_writer.hpp"
 #include "runner/distribution/mpi/local_runs.hpp"
 #include "runner/distribution/mpi/mpi_messages.hpp"
 #include "runner/distribution/shards.hpp"

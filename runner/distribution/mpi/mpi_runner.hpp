@@ -17,12 +17,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "results/store/store.hpp"
 #include "runner/distribution/mpi/mpi_session.hpp"
 #include "runner/execution/parallel_runner.hpp"
 #include "runner/study/study.hpp"
 
 namespace mhb {
+
+class StudyWriter; // results/store/study_writer.hpp
 
 // How the work was spread, filled on rank 0 (tests, benchmarks).
 struct DistributedStats {

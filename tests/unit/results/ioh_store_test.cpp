@@ -11,7 +11,10 @@
 #include "results/exports/ioh_export.hpp"
 #include "results/store/csv.hpp"
 #include "results/store/record_codec.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_files.hpp"
+#include "results/store/study_marker.hpp"
+#include "results/store/study_writer.hpp"
 #include "support/numbers.hpp"
 
 namespace mhb {

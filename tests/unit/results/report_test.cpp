@@ -15,7 +15,8 @@
 #include "results/analysis/critical_difference.hpp"
 #include "results/report/report.hpp"
 #include "results/store/csv.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_writer.hpp"
 #include "support/files.hpp"
 
 namespace mhb {

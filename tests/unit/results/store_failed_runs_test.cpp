@@ -4,7 +4,9 @@
 #include <filesystem>
 #include <gtest/gtest.h>
 
-#include "results/store/store.hpp"
+#include "results/store/run_key.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_writer.hpp"
 
 namespace mhb {
 namespace {

@@ -10,7 +10,9 @@
 
 #include "results/store/csv.hpp"
 #include "results/store/record_codec.hpp"
-#include "results/store/store.hpp"
+#include "results/store/run_key.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_writer.hpp"
 
 namespace mhb {
 namespace {

@@ -4,8 +4,11 @@
 #include <fstream>
 #include <gtest/gtest.h>
 
+#include "results/store/algorithm_info.hpp"
 #include "results/store/csv.hpp"
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_files.hpp"
+#include "results/store/study_writer.hpp"
 
 namespace mhb {
 namespace {

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "results/store/store.hpp"
+#include "results/store/study_writer.hpp"
 #include "runner/distribution/distributed.hpp"
 #include "runner/study/study.hpp"
 #include "runner/study/study_file.hpp"

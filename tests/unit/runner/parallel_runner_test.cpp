@@ -6,7 +6,8 @@
 #include <gtest/gtest.h>
 #include <sstream>
 
-#include "results/store/store.hpp"
+#include "results/store/study_data.hpp"
+#include "results/store/study_writer.hpp"
 #include "runner/execution/parallel_runner.hpp"
 #include "runner/study/study.hpp"
 #include "runner/study/study_file.hpp"

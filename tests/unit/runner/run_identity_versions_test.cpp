@@ -8,7 +8,8 @@
 #include <string>
 
 #include "problems/core/sha256.hpp"
-#include "results/store/store.hpp"
+#include "results/store/run_key.hpp"
+#include "results/store/study_writer.hpp"
 #include "runner/execution/run_identity.hpp"
 #include "runner/run/execute_run.hpp"
 #include "runner/study/study.hpp"
