@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "problems/core/did_you_mean.hpp"
 #include "problems/core/text_excerpt.hpp"
 
 namespace mhb {
@@ -248,11 +249,11 @@ ParameterValues validate_parameters(std::string_view component, const std::vecto
             if (d.name == key)
                 info = &d;
         if (info == nullptr) {
-            std::string known;
+            std::vector<std::string> known;
             for (const auto& d : declared)
-                known += (known.empty() ? "" : ", ") + d.name;
+                known.push_back(d.name);
             errors.push_back(std::string(component) + ": unknown parameter " + quoted_excerpt(key) +
-                             "; known: " + (known.empty() ? "none" : known));
+                             suggestion_or_known(key, known));
             continue;
         }
         const std::string shown = prefix + key + "' = " + value_excerpt(value);

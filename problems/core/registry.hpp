@@ -17,6 +17,11 @@
 
 namespace mhb {
 
+// The error for a name no entry has: "unknown algorithm 'itlob'; did you mean 'itlbo'?", or the
+// names known when none is near (problems/core/did_you_mean.hpp).
+std::invalid_argument unknown_name(const std::string& kind, std::string_view name,
+                                   const std::vector<std::string>& known);
+
 template <class Product> class Registry {
 public:
     using Factory = std::function<std::unique_ptr<Product>(const ParameterValues&)>;
@@ -53,11 +58,15 @@ public:
         for (const auto& e : entries_)
             if (e.name == name)
                 return e;
-        std::string known;
+        throw unknown_name(kind_, name, names());
+    }
+
+    // The registered names, in registration order.
+    [[nodiscard]] std::vector<std::string> names() const {
+        std::vector<std::string> out;
         for (const auto& e : entries_)
-            known += (known.empty() ? "" : ", ") + e.name;
-        throw std::invalid_argument("unknown " + kind_ + " " + quoted_excerpt(name) +
-                                    "; known: " + (known.empty() ? "none" : known));
+            out.push_back(e.name);
+        return out;
     }
 
     [[nodiscard]] bool contains(std::string_view name) const {

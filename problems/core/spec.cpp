@@ -34,17 +34,26 @@ Spec Spec::parse(std::string_view text) {
     spec.name = std::string(trim_blanks(text.substr(0, colon)));
     if (spec.name.empty())
         fail("a name is missing (write name:key=value,...)");
+    if (spec.name.find(',') !=
+        std::string::npos) { // `--algorithms itlbo,pso`: a list, written as in other tools
+        std::string spaced = spec.name;
+        std::replace(spaced.begin(), spaced.end(), ',', ' ');
+        fail("separate several with spaces, not commas: " + value_excerpt(spaced));
+    }
     if (!std::all_of(spec.name.begin(), spec.name.end(), is_name_char))
         fail("name " + quoted_excerpt(spec.name) + " may only hold letters, digits, '_', '-' and '.'");
     if (colon == std::string_view::npos)
         return spec;
     std::string_view rest = text.substr(colon + 1);
-    while (true) {
+    for (bool after_comma = false;; after_comma = true) {
         const auto comma = rest.find(',');
         const std::string_view item = trim_blanks(rest.substr(0, comma));
         const auto eq = item.find('=');
         if (eq == std::string_view::npos)
-            fail(value_excerpt(item) + " is not key=value");
+            fail(value_excerpt(item) + " is not key=value" +
+                 (after_comma && !item.empty() && std::all_of(item.begin(), item.end(), is_name_char)
+                      ? "; to name several components, separate them with spaces"
+                      : ""));
         std::string key(trim_blanks(item.substr(0, eq)));
         std::string value(trim_blanks(item.substr(eq + 1)));
         if (key.empty())

@@ -2,16 +2,32 @@
 // before required options are checked, so `mhbench <command> --help` always works.
 #pragma once
 
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "problems/core/did_you_mean.hpp"
 #include "problems/core/parameters.hpp"
 #include "problems/core/text_excerpt.hpp"
 
 namespace mhb::cli {
+
+// "; did you mean '--threads'?" for an option the command does not have, when one of its options
+// is near; empty otherwise.
+inline std::string option_suggestion(const std::string& given,
+                                     const boost::program_options::options_description& options) {
+    const std::string bare = given.substr(std::min(given.find_first_not_of('-'), given.size()));
+    std::vector<std::string> known;
+    for (const auto& option : options.options())
+        known.push_back(option->long_name());
+    std::vector<std::string> near = closest_names(bare, known);
+    for (auto& name : near)
+        name = "--" + name;
+    return near.empty() ? std::string() : "; " + did_you_mean(near);
+}
 
 // Parses `args` into `vm`. Returns false after calling `print_help` when --help (or -h) was given;
 // otherwise notifies the options (which throws on a missing or malformed value) and returns true.
@@ -25,7 +41,11 @@ parse_command_line(const std::vector<std::string>& args,
     parser.options(options);
     if (positional != nullptr)
         parser.positional(*positional);
-    po::store(parser.run(), vm);
+    try {
+        po::store(parser.run(), vm);
+    } catch (const po::unknown_option& e) {
+        throw po::error(e.what() + option_suggestion(e.get_option_name(), options));
+    }
     if (vm.count("help") != 0) {
         print_help();
         return false;

@@ -10,6 +10,7 @@
 #include <set>
 #include <utility>
 
+#include "problems/core/did_you_mean.hpp"
 #include "problems/core/parameters.hpp"
 #include "problems/core/spec_grid.hpp"
 #include "problems/core/text_excerpt.hpp"
@@ -198,7 +199,12 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
         else
             (key == "target" ? target_ : relative_target_) = v;
     } else {
-        errors.push_back(prefix + "unknown option " + quoted_excerpt(key));
+        std::vector<std::string> known;
+        for (const auto& option : study_options().options())
+            known.push_back(option->long_name());
+        const std::string hint = did_you_mean(closest_names(key, known));
+        errors.push_back(prefix + "unknown option " + quoted_excerpt(key) +
+                         (hint.empty() ? "" : "; " + hint));
     }
 }
 

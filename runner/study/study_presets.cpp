@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "problems/core/did_you_mean.hpp"
+#include "problems/core/text_excerpt.hpp"
 #include "runner/study/study_file.hpp"
 
 namespace mhb {
@@ -34,13 +36,13 @@ const std::vector<StudyPreset>& study_presets() {
 }
 
 const StudyPreset& find_study_preset(std::string_view name) {
-    std::string known;
+    std::vector<std::string> known;
     for (const auto& p : study_presets()) {
         if (p.name == name)
             return p;
-        known += (known.empty() ? "" : ", ") + p.name;
+        known.push_back(p.name);
     }
-    throw std::invalid_argument("unknown study '" + std::string(name) + "'; known: " + known);
+    throw std::invalid_argument("unknown study " + quoted_excerpt(name) + suggestion_or_known(name, known));
 }
 
 } // namespace mhb
