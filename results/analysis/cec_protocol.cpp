@@ -70,6 +70,10 @@ std::vector<std::string> CecProtocol::row_names() const {
     return out;
 }
 
+std::span<const CecProtocol> cec_protocols() {
+    return protocols();
+}
+
 const CecProtocol* find_cec_protocol(std::string_view name) {
     for (const auto& p : protocols())
         if (p.name == name)

@@ -1,5 +1,6 @@
-// The CEC competitions' protocols, as a study follows one (`protocol = cec2017` in its study file):
-// what the organisers ask to be recorded of every run and how they rank entries.
+// The CEC competitions' protocols as numbers: what the organisers ask to be recorded of every run
+// and how they rank entries. A study follows one by name (`protocol = cec2017` in its study file)
+// through results/protocols/, which makes each of these a protocol component.
 //
 //   CEC 2017 (Awad, Ali, Liang, Qu, Suganthan, "Problem definitions and evaluation criteria for the
 //   CEC 2017 special session and competition on single objective real-parameter numerical
@@ -21,6 +22,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -53,9 +55,11 @@ struct CecProtocol {
     [[nodiscard]] std::vector<std::string> row_names() const;
 };
 
-// nullptr for a name that is not a protocol.
+// Every competition's rules, in order (results/protocols/ makes each a protocol a study names).
+std::span<const CecProtocol> cec_protocols();
+// nullptr for a name that is not a competition's.
 const CecProtocol* find_cec_protocol(std::string_view name);
-// "cec2017, cec2022", for messages.
+// "cec2017, cec2022" (a message names the protocols a study may name: protocol_names()).
 std::string cec_protocol_names();
 
 // The protocol a study follows: the value of the `protocol = NAME` line of its study.ini, if any.

@@ -6,25 +6,23 @@
 #include <optional>
 #include <stdexcept>
 
-#include "results/analysis/cec_protocol.hpp"
+#include "results/analysis/cec_protocol.hpp" // study_protocol: the `protocol =` line of study.ini
 #include "results/analysis/critical_difference.hpp"
 #include "results/analysis/curve_data.hpp"
 #include "results/analysis/factorial_effects.hpp"
 #include "results/analysis/relative_gaps.hpp"
-#include "results/exports/cec_result_files.hpp"
 #include "results/exports/ioh_export.hpp"
 #include "results/html/html_report.hpp"
 #include "results/latex/latex_document.hpp"
 #include "results/latex/latex_table.hpp"
+#include "results/protocols/protocol_report.hpp"
 #include "results/report/report_figures.hpp"
 #include "results/report/report_readme.hpp"
 #include "results/store/csv.hpp"
 #include "results/store/study_index.hpp"
 #include "results/table_model/table.hpp"
-#include "results/tables/cec_tables.hpp"
 #include "results/tables/comparison_tables.hpp"
 #include "results/tables/effects_table.hpp"
-#include "results/tables/paper_tables.hpp"
 #include "results/tables/relative_gap_table.hpp"
 #include "results/text/csv_table.hpp"
 #include "results/text/markdown_table.hpp"
@@ -63,7 +61,8 @@ void check_options(const ReportOptions& options) {
 std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOptions& comparison,
                                  const std::vector<DesignEffects>& designs,
                                  const std::vector<DesignCandidate>& rejected, bool list_algorithms,
-                                 const CecProtocol* protocol, const std::optional<RelativeGaps>& gaps) {
+                                 const std::vector<const SuiteProtocol*>& protocols,
+                                 const std::optional<RelativeGaps>& gaps) {
     std::vector<Table> tables;
     if (list_algorithms) {
         Table t;
@@ -77,15 +76,17 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
             "dropped), the full spec lists every parameter with its value, defaults included.";
         tables.push_back(std::move(t));
     }
-    for (auto& t : pmsm_paper_tables(index))
+    for (auto& t : protocol_tables(protocols, ProtocolTablesPlace::before_comparisons, index,
+                                   comparison.reference, comparison.alpha))
         tables.push_back(std::move(t));
     for (auto& t : comparison_tables(index, comparison))
         tables.push_back(std::move(t));
     if (gaps) // problems on one scale: where the optimisers part
         tables.push_back(relative_gap_table(index, *gaps));
-    if (protocol != nullptr) // the competition's tables, per dimension
-        for (auto& t : cec_tables(index, *protocol, comparison.reference, comparison.alpha))
-            tables.push_back(std::move(t));
+    // The protocols' tables that follow the statistics: the competition's, per dimension.
+    for (auto& t : protocol_tables(protocols, ProtocolTablesPlace::after_comparisons, index,
+                                   comparison.reference, comparison.alpha))
+        tables.push_back(std::move(t));
     if (auto effects = effects_table(designs, rejected, comparison.alpha))
         tables.push_back(std::move(*effects));
     if (!index.budget().empty())
@@ -206,15 +207,14 @@ void say_budget_summary(const StudyData& study, const std::string& budget, const
         console << "no factorial analysis of " << r.name << ": " << r.why_not << '\n';
 }
 
-// The CEC protocol the study follows (`protocol = cec2017` in study.ini), if it names one this
-// mhbench knows: such a study gets its tables and the organisers' result files.
-const CecProtocol* study_cec_protocol(const StudyData& study, std::ostream& console) {
+// The protocols the study follows: the one study.ini names (`protocol = cec2017`), if this mhbench
+// knows it, and those in force unnamed (the paper's tables). They add tables and files.
+std::vector<const SuiteProtocol*> study_protocols(const StudyData& study, std::ostream& console) {
     const std::optional<std::string> protocol_name = study_protocol(study.study_text);
-    const CecProtocol* protocol = protocol_name ? find_cec_protocol(*protocol_name) : nullptr;
-    if (protocol_name && protocol == nullptr)
-        console << "protocol '" << *protocol_name << "' is not one this mhbench knows ("
-                << cec_protocol_names() << "): its tables and result files are not written\n";
-    return protocol;
+    if (protocol_name && find_protocol(*protocol_name) == nullptr)
+        console << "protocol '" << *protocol_name << "' is not one this mhbench knows (" << protocol_names()
+                << "): its tables and result files are not written\n";
+    return protocols_in_force(protocol_name.value_or(""));
 }
 
 // Writes `content` to `path`, or removes `path` when there is none: a stale file from an earlier
@@ -257,23 +257,6 @@ void write_curve_data(const StudyIndex& index, const std::string& budget, const 
     files.effect_means = !designs.empty();
     files.relative_gaps = gaps.has_value();
     files.budget_txt = !budget.empty();
-}
-
-// The organisers' result files in dir/cec when the study follows a CEC protocol; otherwise those of
-// an earlier report of the study, when it followed one, are removed.
-void write_cec_files(const StudyIndex& index, const CecProtocol* protocol, const fs::path& dir,
-                     std::ostream& console) {
-    if (protocol != nullptr) {
-        const CecFilesSummary cec = write_cec_result_files(index, *protocol, dir / "cec");
-        console << protocol->title << " result files (" << cec.files
-                << ", the organisers' layout; see README there): " << (dir / "cec").string() << '\n';
-        if (cec.failed_runs > 0)
-            console << protocol->title << " result files: " << count_of(cec.failed_runs, "failed run")
-                    << " left out\n";
-    } else if (fs::exists(dir / "cec" / "README")) {
-        std::error_code ec;
-        fs::remove_all(dir / "cec", ec);
-    }
 }
 
 // Says on the console what the IOHprofiler export in `ioh` holds and left out.
@@ -325,21 +308,22 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
     comparison.alpha = options.alpha;
     const FactorialFindings factorial = factorial_findings(index, options.alpha);
     say_budget_summary(study, budget, index, heading, comparison.reference, factorial, console);
-    const CecProtocol* protocol = study_cec_protocol(study, console);
+    const std::vector<const SuiteProtocol*> protocols = study_protocols(study, console);
     console << '\n';
 
     const std::optional<RelativeGaps> gaps = relative_gaps(index);
     const std::vector<Table> tables = budget_tables(index, comparison, factorial.designs, factorial.rejected,
-                                                    !study.algorithms.empty(), protocol, gaps);
+                                                    !study.algorithms.empty(), protocols, gaps);
     write_tables(tables, dir, options, console, all_markdown);
     ReportFiles files;
     files.formats.assign(options.formats.begin(), options.formats.end());
     write_curve_data(index, budget, dir, factorial.designs, gaps, options.alpha, files);
-    write_cec_files(index, protocol, dir, console);
+    // The protocols' files (the CEC organisers' in cec/); those of an earlier report removed.
+    const bool protocol_files = write_protocol_files(protocols, index, dir, console);
     const IohExportSummary ioh = write_ioh_export(index, dir / "ioh", options.ioh_precision);
     console << "tables and curve data: " << dir.string() << '\n';
     say_ioh_export(ioh, dir / "ioh", console);
-    files.cec = protocol != nullptr;
+    files.cec = protocol_files;
     files.ioh = ioh.files > 0;
     files.combined = html.folder.empty(); // no folder of its own: this budget is the whole report
     html.budget = budget;

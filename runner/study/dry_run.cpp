@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "results/analysis/cec_protocol.hpp"
+#include "results/protocols/protocol_registry.hpp"
 #include "results/store/study_files.hpp"
 #include "runner/study/calibration.hpp"
 
@@ -91,10 +91,9 @@ std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::p
         }
         out << '\n';
     }
-    if (const CecProtocol* protocol = find_cec_protocol(s.protocol))
-        out << "\nprotocol: " << s.protocol << " (" << protocol->title
-            << "): the report adds the competition's tables per dimension and the organisers' result files "
-               "(report/cec/)\n";
+    for (const SuiteProtocol* protocol : protocols_in_force(s.protocol))
+        if (const std::string line = protocol->dry_run_line(); !line.empty())
+            out << '\n' << line << '\n';
     const double seconds = estimate.cpu_seconds() / std::max(threads, 1);
     char line[160];
     std::snprintf(line, sizeof line, "%s evaluations, roughly %.3g s on %d thread%s",

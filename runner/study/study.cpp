@@ -12,7 +12,7 @@
 #include "problems/core/rng.hpp"
 #include "problems/core/spec.hpp"
 #include "problems/core/spec_grid.hpp"
-#include "results/analysis/cec_protocol.hpp"
+#include "results/protocols/protocol_registry.hpp"
 
 namespace mhb {
 namespace {
@@ -327,35 +327,22 @@ void check_optimizer_dimensions(const PreparedStudy& prepared, std::vector<std::
                 errors.push_back(std::move(*refusal));
 }
 
-// A protocol names its suite and records errors at fractions of the evaluation budget.
+// The protocols in force (the one the study names, and those in force unnamed) check the study:
+// a CEC protocol wants its suite's problems and budgets that give evaluation counts.
 void check_protocol(const PreparedStudy& prepared, std::vector<std::string>& errors) {
     const std::string& name = prepared.study.protocol;
-    if (name.empty())
-        return;
-    const CecProtocol* protocol = find_cec_protocol(name);
-    if (protocol == nullptr) {
-        errors.push_back("protocol = " + name + " is not one of " + cec_protocol_names());
+    if (!name.empty() && find_protocol(name) == nullptr) {
+        errors.push_back("protocol = " + name + " is not one of " + protocol_names());
         return;
     }
-    std::size_t others = 0;
-    std::string first;
+    ProtocolStudy study;
     for (const auto& problem : prepared.problem_specs)
-        if (Spec::parse(problem).name != protocol->family && others++ == 0)
-            first = problem;
-    if (others > 0)
-        errors.push_back("protocol " + name + ": " +
-                         (others > 1
-                              ? "problems '" + first + "' and " + std::to_string(others - 1) + " more are"
-                              : "problem '" + first + "' is") +
-                         " not of the " + std::string(protocol->family) +
-                         " suite; the protocol's tables and result files cover its functions only (write " +
-                         std::string(protocol->family) + ":f=...,dim=...)");
+        study.problems.push_back({problem, Spec::parse(problem).name});
     for (const StudyBudget& budget : prepared.study.budgets)
-        if (!budget.max_evaluations && !budget.evaluations_by_dimension)
-            errors.push_back("protocol " + name + ": budget '" + budget_text(budget) +
-                             "' gives no evaluation count; the protocol records errors at fractions of it "
-                             "(write evaluations=" +
-                             std::string(protocol->evaluations) + ")");
+        study.budgets.push_back(
+            {budget_text(budget), budget.max_evaluations || budget.evaluations_by_dimension});
+    for (const SuiteProtocol* protocol : protocols_in_force(name))
+        protocol->check_study(study, errors);
 }
 
 } // namespace

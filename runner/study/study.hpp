@@ -53,9 +53,9 @@ struct Study {
     // relative to f*); several budgets
     // make the budget a factor of the study, each reported separately.
     std::vector<StudyBudget> budgets{StudyBudget{}};
-    // A CEC competition protocol the study follows ("cec2017", "cec2022"; results/analysis/cec_protocol.hpp),
-    // or empty. It changes no run: its problems must be of the protocol's suite and its budgets give
-    // an evaluation count, and the report adds the competition's tables and result files. (Its
+    // The protocol the study follows ("cec2017", "cec2022"; results/protocols/protocol_registry.hpp),
+    // or empty. It changes no run: the protocol checks the study (a CEC protocol: problems of its
+    // suite, budgets that give an evaluation count), and the report adds its tables and files. (Its
     // initializer spares aggregate initialisations that end before it a -Wmissing-field-initializers.)
     std::string protocol{};
     // Plug-in modules (runner/plugins/plugin_loader.hpp) whose components the study names, as absolute

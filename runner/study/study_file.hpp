@@ -16,7 +16,7 @@
 //   target = 1e-8                              optional
 //   budget = evaluations=10000*dim             evaluations by dimension
 //   (results/analysis/dimension_budget.hpp) protocol = cec2017                         a CEC protocol's
-//   tables and files (results/analysis/cec_protocol.hpp) plugins = /path/mine.so                    plug-in
+//   tables and files (results/protocols/) plugins = /path/mine.so                    plug-in
 //   modules naming components (runner/plugins/plugin_loader.hpp)
 //
 // `#` starts a comment; a UTF-8 byte-order mark is skipped. Every error names the file and the

@@ -14,7 +14,7 @@
 #include "problems/core/parameters.hpp"
 #include "problems/core/spec_grid.hpp"
 #include "problems/core/text_excerpt.hpp"
-#include "results/analysis/cec_protocol.hpp"
+#include "results/protocols/protocol_registry.hpp"
 
 namespace mhb {
 namespace po = boost::program_options;
@@ -183,10 +183,10 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
     } else if (key == "protocol") {
         if (value == "none")
             study_.protocol.clear();
-        else if (find_cec_protocol(value) != nullptr)
+        else if (find_protocol(value) != nullptr)
             study_.protocol = value;
         else
-            fail("is not one of {" + cec_protocol_names() + ", none}");
+            fail("is not one of {" + protocol_names() + ", none}");
     } else if (key == "budget" || key == "budgets") {
         add_budgets(budgets_, value, prefix, errors);
     } else if (key == "target" || key == "relative-target") {

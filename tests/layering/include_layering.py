@@ -19,9 +19,10 @@ Rooms inside a folder:
               (functions/, bbob/, cec/, pmsm/, fluxmap/, external/) includes itself, the top and
               core/, never another family
   results/    the order results/README.md draws: store/ < table_model/ < analysis/ < tables/ <
-              text/, latex/, html/, exports/ < report/, each including only rooms below it; the
-              renderers (text/, latex/, html/) read no analysis and no tables, and exports/ no tables
-              (results/exports/README.md); nothing includes report/
+              text/, latex/, html/, exports/ < protocols/ < report/, each including only rooms below
+              it; the renderers (text/, latex/, html/) read no analysis and no tables, exports/ no
+              tables (results/exports/README.md), protocols/ no renderer (it builds tables and writes
+              files, results/protocols/README.md); nothing includes report/
   runner/     the order runner/README.md lists: run/ < study/ < execution/ < distribution/ <
               plugins/ < single_problem/ < cli/, each including only rooms before it; the plug-in
               contract at the top (plugin_api.hpp) includes no runner room
@@ -52,6 +53,7 @@ RESULTS_BELOW = {
     "latex": {"latex", "table_model", "store"},
     "html": {"html", "table_model", "store"},
     "exports": {"exports", "analysis", "table_model", "store"},
+    "protocols": {"protocols", "tables", "exports", "analysis", "table_model", "store"},
 }
 RESULTS_BELOW["report"] = set(RESULTS_BELOW) | {"report"}
 
@@ -199,6 +201,12 @@ SELF_TEST_CASES = [
     ("results/html/a.cpp", "results/analysis/statistics.hpp", False),
     ("results/exports/a.cpp", "results/tables/table_cells.hpp", False),
     ("results/tables/a.cpp", "results/report/report.hpp", False),
+    ("results/tables/a.cpp", "results/protocols/suite_protocol.hpp", False),
+    ("results/exports/a.cpp", "results/protocols/suite_protocol.hpp", False),
+    ("results/protocols/a.cpp", "results/report/report.hpp", False),
+    ("results/protocols/a.cpp", "results/text/markdown_table.hpp", False),
+    ("results/protocols/a.cpp", "results/exports/cec_result_files.hpp", True),
+    ("results/report/a.cpp", "results/protocols/protocol_registry.hpp", True),
     ("results/store/a.cpp", "problems/problem.hpp", False),
     ("results/store/a.cpp", "problems/pmsm/dataset.hpp", False),
     ("results/report/a.cpp", "problems/core/process/child_process.hpp", True),
