@@ -19,9 +19,9 @@ Rooms inside a folder:
               (functions/, bbob/, cec/, pmsm/, fluxmap/, external/) includes itself, the top and
               core/, never another family
   results/    the order results/README.md draws: store/ < table_model/ < analysis/ < tables/ <
-              text/, latex/, html/, exports/ < report/, each including only rooms below it; the
-              renderers (text/, latex/, html/) read no analysis and no tables, and exports/ no tables
-              (results/exports/README.md); nothing includes report/
+              text/, latex/, html/, exports/ < reporters/ < report/, each including only rooms below
+              it; the renderers (text/, latex/, html/) read no analysis and no tables, exports/ and
+              reporters/ no tables (results/exports/README.md); nothing includes report/
   runner/     the order runner/README.md lists: run/ < study/ < execution/ < distribution/ <
               plugins/ < single_problem/ < cli/, each including only rooms before it; the plug-in
               contract at the top (plugin_api.hpp) includes no runner room
@@ -53,6 +53,8 @@ RESULTS_BELOW = {
     "html": {"html", "table_model", "store"},
     "exports": {"exports", "analysis", "table_model", "store"},
 }
+# The reporters hand the renderers and exports what a report made; they build no table themselves.
+RESULTS_BELOW["reporters"] = {"reporters", "text", "latex", "html", "exports", "analysis", "table_model", "store"}
 RESULTS_BELOW["report"] = set(RESULTS_BELOW) | {"report"}
 
 RUNNER_ORDER = ["run", "study", "execution", "distribution", "plugins", "single_problem", "cli"]
@@ -204,6 +206,10 @@ SELF_TEST_CASES = [
     ("results/report/a.cpp", "problems/core/process/child_process.hpp", True),
     ("results/store/a.cpp", "problems/core/fnv1a.hpp", True),
     ("results/report/a.cpp", "results/html/html_report.hpp", True),
+    ("results/reporters/a.cpp", "results/latex/latex_document.hpp", True),
+    ("results/reporters/a.cpp", "results/tables/comparison_tables.hpp", False),
+    ("results/exports/a.cpp", "results/reporters/reporter.hpp", False),
+    ("results/report/a.cpp", "results/reporters/reporter_registry.hpp", True),
     ("results/a.cpp", "results/store/csv.hpp", False),
     ("runner/run/a.cpp", "runner/study/study.hpp", False),
     ("runner/plugin_api.hpp", "runner/plugins/components.hpp", False),
