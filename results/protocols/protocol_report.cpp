@@ -15,6 +15,11 @@ std::vector<Table> protocol_tables(const std::vector<const SuiteProtocol*>& prot
     return out;
 }
 
+bool writes_protocol_files(const std::vector<const SuiteProtocol*>& protocols) {
+    return std::any_of(protocols.begin(), protocols.end(),
+                       [](const SuiteProtocol* p) { return !p->files_folder().empty(); });
+}
+
 bool write_protocol_files(const std::vector<const SuiteProtocol*>& protocols, const StudyIndex& index,
                           const std::filesystem::path& dir, std::ostream& console) {
     const auto in_force_folder = [&](std::string_view folder) {

@@ -16,6 +16,9 @@ std::vector<Table> protocol_tables(const std::vector<const SuiteProtocol*>& prot
                                    ProtocolTablesPlace place, const StudyIndex& index,
                                    const std::string& reference, double alpha);
 
+// Whether a protocol of `protocols` writes files (write_protocol_files).
+bool writes_protocol_files(const std::vector<const SuiteProtocol*>& protocols);
+
 // Writes the files of `protocols` into the budget's report directory `dir` and removes those an
 // earlier report wrote there for a protocol no longer in force (unless one in force writes the same
 // folder). Returns whether a protocol in force wrote files.

@@ -11,21 +11,17 @@
 #include "results/analysis/curve_data.hpp"
 #include "results/analysis/factorial_effects.hpp"
 #include "results/analysis/relative_gaps.hpp"
-#include "results/exports/ioh_export.hpp"
-#include "results/html/html_report.hpp"
-#include "results/latex/latex_document.hpp"
-#include "results/latex/latex_table.hpp"
 #include "results/protocols/protocol_report.hpp"
 #include "results/report/report_figures.hpp"
 #include "results/report/report_readme.hpp"
+#include "results/reporters/count_of.hpp"
+#include "results/reporters/reporter_registry.hpp"
 #include "results/store/csv.hpp"
 #include "results/store/study_index.hpp"
 #include "results/table_model/table.hpp"
 #include "results/tables/comparison_tables.hpp"
 #include "results/tables/effects_table.hpp"
 #include "results/tables/relative_gap_table.hpp"
-#include "results/text/csv_table.hpp"
-#include "results/text/markdown_table.hpp"
 
 namespace mhb {
 
@@ -47,12 +43,8 @@ std::string shell_quote(const std::string& text) {
 void check_options(const ReportOptions& options) {
     if (!(options.alpha > 0.0 && options.alpha < 1.0))
         throw std::invalid_argument("--alpha = " + format_number(options.alpha) + " is outside (0, 1)");
-    if (options.formats.empty())
-        throw std::invalid_argument("--format: choose at least one of md, tex, csv");
-    for (const auto& f : options.formats)
-        if (f != "md" && f != "tex" && f != "csv")
-            throw std::invalid_argument("--format: '" + (f.size() > 40 ? f.substr(0, 37) + "..." : f) +
-                                        "' is not one of md, tex, csv");
+    if (const std::optional<std::string> error = table_format_error(options.formats))
+        throw std::invalid_argument(*error);
     if (options.errors == nullptr)
         throw std::logic_error("ReportOptions::errors is null");
 }
@@ -112,30 +104,11 @@ std::string budget_reference(const StudyIndex& index, const ReportOptions& optio
     return resolve_reference(index, std::nullopt);
 }
 
-void write_tables(const std::vector<Table>& tables, const fs::path& dir, const ReportOptions& options,
-                  std::ostream& console, std::string& all_markdown) {
-    for (const auto& t : tables) {
-        const std::string markdown = render_markdown(t);
-        console << markdown << '\n';
-        all_markdown += markdown + '\n';
-        if (options.formats.count("md"))
-            write_file_atomically(dir / (t.id + ".md"), markdown);
-        if (options.formats.count("tex"))
-            write_file_atomically(dir / (t.id + ".tex"), render_latex(t));
-        if (options.formats.count("csv"))
-            write_file_atomically(dir / (t.id + ".csv"), render_csv(t));
-    }
-}
-
 void make_report_directory(const fs::path& dir) {
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec || !fs::is_directory(dir))
         throw std::runtime_error(dir.string() + ": cannot create the report directory");
-}
-
-std::string count_of(std::size_t n, const char* noun) {
-    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
 }
 
 // The 2^k on/off designs among the budget's variants, with their effects, and the candidates that
@@ -247,11 +220,11 @@ void write_curve_data(const StudyIndex& index, const std::string& budget, const 
                     gaps ? std::optional<std::string>(relative_gap_medians_csv(index, *gaps)) : std::nullopt);
     std::error_code ec;
     // Tables a report may leave out: stale copies from an earlier report would mislead.
-    for (const char* ext : {".md", ".tex", ".csv"}) {
+    for (const std::string& format : table_format_names()) {
         if (designs.empty())
-            fs::remove(dir / (std::string("effects") + ext), ec);
+            fs::remove(dir / ("effects." + format), ec);
         if (!gaps)
-            fs::remove(dir / (std::string("relative_gaps") + ext), ec);
+            fs::remove(dir / ("relative_gaps." + format), ec);
     }
     files.critical_difference = critical_difference.has_value();
     files.effect_means = !designs.empty();
@@ -259,29 +232,10 @@ void write_curve_data(const StudyIndex& index, const std::string& budget, const 
     files.budget_txt = !budget.empty();
 }
 
-// Says on the console what the IOHprofiler export in `ioh` holds and left out.
-void say_ioh_export(const IohExportSummary& ioh, const fs::path& ioh_dir, std::ostream& console) {
-    if (ioh.files > 0)
-        console << "IOHprofiler export (" << ioh.files
-                << " files, load the folder in IOHanalyzer): " << ioh_dir.string() << '\n';
-    else
-        console << "IOHprofiler export: no run has a finite value to export\n";
-    if (ioh.runs_left_out > 0)
-        console << "IOHprofiler export: left out " << count_of(ioh.runs_left_out, "run")
-                << " that ended at +inf (no improvement to log, as IOHexperimenter would log none)\n";
-    if (ioh.none_values > 0)
-        console << "IOHprofiler export: " << count_of(ioh.none_values, "infinite value")
-                << " written None, as IOHexperimenter writes them\n";
-    if (ioh.approximate_runs > 0)
-        console << "IOHprofiler export: " << count_of(ioh.approximate_runs, "run")
-                << " stored before mhbench recorded improvements: rows where the trace recorded them, not at "
-                   "each improvement (approximate; run the study again with --overwrite for exact rows)\n";
-}
-
 // The figures of the budget unless `figures` is false (set to false when they are interrupted),
-// and what the budget's section of index.html says about them.
+// and what the budget's section of the study-level documents (index.html) says about them.
 void draw_budget_figures(const ReportOptions& options, const fs::path& dir, std::ostream& console,
-                         bool& figures, HtmlBudgetSection& html) {
+                         bool& figures, BudgetSection& html) {
     html.figures_current = figures;
     if (figures && draw_figures(options, dir, console, html.figures_note) == Figures::interrupted)
         figures = false;
@@ -294,13 +248,13 @@ void draw_budget_figures(const ReportOptions& options, const fs::path& dir, std:
     }
 }
 
-// Everything of one budget in `dir`: tables, curve data, effects, IOH export, and the figures
-// unless `figures` is false. Returns the tables (for the combined report.md and report.tex); sets
-// `figures` to false when they were interrupted. `html` gets the budget's section of index.html.
-std::vector<Table> write_budget_report(const StudyData& study, const std::string& budget, const fs::path& dir,
-                                       const std::string& heading, const ReportOptions& options,
-                                       std::ostream& console, std::string& all_markdown, bool& figures,
-                                       HtmlBudgetSection& html) {
+// Everything of one budget in `dir`: tables, curve data, effects, what every reporter writes of
+// it, and the figures unless `figures` is false (set to false when they were interrupted).
+// `section` gets the budget's part of the documents that hold the whole report.
+void write_budget_report(const StudyData& study, const std::string& budget, const fs::path& dir,
+                         const std::string& heading, const ReportOptions& options,
+                         const std::vector<const Reporter*>& reporters, std::ostream& console, bool& figures,
+                         BudgetSection& section) {
     make_report_directory(dir);
     const StudyIndex index(study, budget);
     ComparisonOptions comparison;
@@ -314,25 +268,23 @@ std::vector<Table> write_budget_report(const StudyData& study, const std::string
     const std::optional<RelativeGaps> gaps = relative_gaps(index);
     const std::vector<Table> tables = budget_tables(index, comparison, factorial.designs, factorial.rejected,
                                                     !study.algorithms.empty(), protocols, gaps);
-    write_tables(tables, dir, options, console, all_markdown);
+    const BudgetReportContext context{index, tables, dir, protocols, options.ioh_precision, console};
+    for (const Reporter* reporter : reporters)
+        reporter->write_tables(context);
     ReportFiles files;
     files.formats.assign(options.formats.begin(), options.formats.end());
     write_curve_data(index, budget, dir, factorial.designs, gaps, options.alpha, files);
-    // The protocols' files (the CEC organisers' in cec/); those of an earlier report removed.
-    const bool protocol_files = write_protocol_files(protocols, index, dir, console);
-    const IohExportSummary ioh = write_ioh_export(index, dir / "ioh", options.ioh_precision);
     console << "tables and curve data: " << dir.string() << '\n';
-    say_ioh_export(ioh, dir / "ioh", console);
-    files.cec = protocol_files;
-    files.ioh = ioh.files > 0;
-    files.combined = html.folder.empty(); // no folder of its own: this budget is the whole report
-    html.budget = budget;
-    html.directory = dir;
-    html.tables = tables;
-    draw_budget_figures(options, dir, console, figures, html);
+    for (const Reporter* reporter : reporters)
+        reporter->write_budget(context);
+    files.cec = writes_protocol_files(protocols);
+    files.combined = section.folder.empty(); // no folder of its own: this budget is the whole report
+    section.budget = budget;
+    section.directory = dir;
+    section.tables = tables;
+    draw_budget_figures(options, dir, console, figures, section);
     files.figures = fs::exists(dir / "figures");
     write_file_atomically(dir / "README.md", report_readme(tables, files));
-    return tables;
 }
 
 } // namespace
@@ -354,20 +306,14 @@ ReportOutcome build_report(const StudyData& study, const ReportOptions& options,
     const std::string heading = "mhbench report of " + study.directory.string() + ": ";
     if (budgets.size() > 1)
         console << heading << budgets.size() << " budgets, each reported in its own folder\n";
-    // The context (version, commit, compiler, threads, date) heads the combined report, so a table
-    // read later says what produced it.
-    std::string all_markdown = "# mhbench report: " + study.directory.string() +
-                               "\n\nStudy context (context.ini):\n\n```\n" + study.context_text +
-                               (study.context_text.empty() || study.context_text.back() == '\n' ? "" : "\n") +
-                               "```\n\n";
-    std::vector<LatexSection> latex; // report.tex: a section per budget when there are several
+    const std::vector<const Reporter*> reporters = selected_reporters(options.formats);
     // Interrupted figures end the figures, not the report: the tables of every budget are still
     // written (they take little time), so that only the figures are left for `mhbench report`.
     bool figures = options.figures;
-    std::vector<HtmlBudgetSection> html; // the sections of index.html, one per budget
+    std::vector<BudgetSection> sections; // of report.md, report.tex, index.html: one per budget
     if (budgets.size() == 1) {
-        latex.push_back({"", write_budget_report(study, budgets.front(), out_dir, heading, options, console,
-                                                 all_markdown, figures, html.emplace_back())});
+        write_budget_report(study, budgets.front(), out_dir, heading, options, reporters, console, figures,
+                            sections.emplace_back());
     } else {
         // Several budgets: one complete report per budget in <out>/<budget slug>/, the combined
         // report.md / report.tex and budgets.csv (budget,directory) on top.
@@ -376,31 +322,18 @@ ReportOutcome build_report(const StudyData& study, const ReportOptions& options,
         for (const auto& budget : budgets) {
             const std::string slug = folders.emplace_back(budget_slug(budget));
             index_csv += csv_field(budget) + ',' + csv_field(slug) + '\n';
-            all_markdown += "## Budget " + (budget.empty() ? std::string("unspecified") : budget) + " (" +
-                            slug + "/)\n\n";
-            html.emplace_back().folder = slug;
-            LatexSection& section = latex.emplace_back();
-            section.heading = "Budget " + (budget.empty() ? std::string("unspecified") : budget);
-            for (auto& t : write_budget_report(study, budget, out_dir / slug, "budget " + budget + ": ",
-                                               options, console, all_markdown, figures, html.back())) {
-                t.id = slug + "_" + t.id; // one LaTeX label per table in the combined report.tex
-                section.tables.push_back(std::move(t));
-            }
+            sections.emplace_back().folder = slug;
+            write_budget_report(study, budget, out_dir / slug, "budget " + budget + ": ", options, reporters,
+                                console, figures, sections.back());
         }
         write_file_atomically(out_dir / "budgets.csv", index_csv);
         write_file_atomically(out_dir / "README.md", budgets_readme(budgets, folders));
     }
-    if (options.formats.count("md"))
-        write_file_atomically(out_dir / "report.md", all_markdown);
-    if (options.formats.count("tex"))
-        write_file_atomically(out_dir / "report.tex",
-                              latex_document(study.directory.string(), study.context_text, latex));
     ReportOutcome outcome;
-    // The page is rebuilt by every report, from the tables above and whatever figures/*.svg hold.
-    outcome.html = write_html_report(
-        out_dir, {study.directory.string(), study.context_text, study.study_text, std::move(html)});
-    console << "HTML report (one self-contained page): " << outcome.html.string() << "\n  "
-            << file_url(outcome.html) << '\n';
+    const StudyReportContext context{study, out_dir, sections, console};
+    for (const Reporter* reporter : reporters)
+        if (const std::optional<fs::path> page = reporter->write_study(context); page && outcome.html.empty())
+            outcome.html = *page;
     outcome.interrupted = options.figures && !figures;
     if (outcome.interrupted) {
         std::string again = "mhbench report " + shell_quote(study.directory.string());

@@ -8,7 +8,8 @@
 // A study with several budgets gets all of that once per budget, in <report>/<budget slug>/ (see
 // budget_slug), with budgets.csv, report.md and report.tex on top; a study with one budget keeps
 // the flat layout. Prints the Markdown tables to the console. The runner calls it at the end of
-// `mhbench run`.
+// `mhbench run`. Each of those outputs but the curve data and the figures is a reporter
+// (results/reporters/reporter.hpp), registered by name: this room decides when, they write.
 // Failed runs are left out of every statistic and +inf final values (legal: the worst) are kept;
 // the console summary, the captions and the figures say what was left out. Figures are a
 // convenience: a plotting script that fails is reported in one line on `errors` ("figures
@@ -31,6 +32,7 @@
 #include <vector>
 
 #include "results/exports/ioh_export.hpp"
+#include "results/reporters/reporter_registry.hpp"
 #include "results/store/study_data.hpp"
 
 namespace mhb {
@@ -40,7 +42,8 @@ struct ReportOptions {
     std::optional<std::string> reference; // algorithm to test against (spec, label or unique name);
                                           // at a budget that did not run it, the default there
     double alpha = 0.05;                  // significance level of the markers
-    std::set<std::string> formats = {"md", "tex", "csv"};
+    // Table formats, by reporter name (results/reporters/): --format; every export is always written.
+    std::set<std::string> formats = default_table_formats();
     bool figures = true;
     IohPrecision ioh_precision = IohPrecision::logger; // raw_y of ioh/*.dat
     std::filesystem::path plot_script;                 // scripts/plot_study.py; empty: figures are skipped
@@ -59,7 +62,8 @@ struct ReportOutcome {
     // after it are not (or only some), and `mhbench report` draws them. `errors` got one line:
     // "figures interrupted; run `mhbench report DIR` to draw them".
     bool interrupted = false;
-    // index.html: every table and figure on one self-contained page (results/html/html_report.hpp).
+    // The page `--open` shows: index.html, every table and figure on one self-contained page
+    // (results/reporters/html_reporter.cpp).
     std::filesystem::path html;
 };
 

@@ -15,12 +15,11 @@ namespace mhb {
 
 // Which optional files a budget's report directory holds.
 struct ReportFiles {
-    std::vector<std::string> formats; // of the tables: "md", "tex", "csv"
+    std::vector<std::string> formats; // of the tables, the extensions of their files: "md", "tex", ...
     bool critical_difference = false;
     bool effect_means = false;
     bool relative_gaps = false;
     bool cec = false;
-    bool ioh = false;
     bool figures = false;
     bool budget_txt = false;
     bool combined = true; // report.md, report.tex and index.html sit beside the files (one budget)

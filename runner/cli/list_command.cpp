@@ -1,15 +1,18 @@
-// `mhbench list [algorithms|problems|studies]`: what can be named in a study, with each entry's
-// summary, reference and parameters (default, allowed values, meaning). Printed straight from
-// the registries' declarations, so it can never disagree with what the code accepts.
+// `mhbench list [algorithms|problems|studies|formats]`: what can be named in a study, with each
+// entry's summary, reference and parameters (default, allowed values, meaning), and the outputs a
+// report writes. Printed straight from the registries' declarations, so it can never disagree
+// with what the code accepts.
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <cstdio>
 #include <iostream>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/problem_registry.hpp"
+#include "results/reporters/reporter_registry.hpp"
 #include "runner/cli/command.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/plugins/components.hpp"
@@ -85,28 +88,53 @@ void print_studies(std::ostream& out) {
     }
 }
 
+// The reporters: the table formats --format chooses from, then what every report writes.
+void print_formats(std::ostream& out) {
+    const std::set<std::string> defaults = default_table_formats();
+    out << "Output formats (" << reporters().size() << "): table formats for --format of mhbench report and "
+        << "mhbench run, then what every report writes\n\n";
+    for (const ReporterKind kind : {ReporterKind::table_format, ReporterKind::every_report})
+        for (const auto& reporter : reporters()) {
+            if (reporter->kind() != kind)
+                continue;
+            const std::string name(reporter->name());
+            out << "  " << name
+                << (kind == ReporterKind::every_report ? " (every report)"
+                    : defaults.count(name) != 0        ? " (table format, default)"
+                                                       : " (table format)")
+                << "\n      " << reporter->description() << '\n';
+        }
+    out << '\n';
+}
+
 } // namespace
 
 int run_list_command(const std::vector<std::string>& args) {
     po::options_description options("Options");
-    options.add_options()("help,h", "this text")("what", po::value<std::string>(),
-                                                 "algorithms, problems or studies (default: all three)")(
+    options.add_options()("help,h", "this text")(
+        "what", po::value<std::string>(), "algorithms, problems, studies (default: these three) or formats")(
         "plugin", po::value<std::vector<std::string>>()->composing(),
         "also list the optimisers and problems of this plug-in module (repeatable)");
     po::positional_options_description positional;
     positional.add("what", 1);
     po::variables_map vm;
     const auto print_help = [&] {
-        std::cout << "Usage: mhbench list [algorithms|problems|studies] [--plugin lib.so ...]\n\n"
+        std::cout << "Usage: mhbench list [algorithms|problems|studies] [--plugin lib.so ...]\n"
+                     "       mhbench list formats\n\n"
                      "Lists what a study can name: every registered optimiser and problem family with its\n"
                      "summary, reference and parameters (default, allowed values, meaning), and the study\n"
-                     "presets of mhbench run --study.\n\n"
+                     "presets of mhbench run --study; `formats`: the outputs a report writes (the table\n"
+                     "formats of --format, the exports).\n\n"
                   << options << "\nExamples:\n  mhbench list\n  mhbench list algorithms\n";
     };
     if (!parse_command_line(args, options, vm, print_help, &positional))
         return exit_ok;
     const std::string what = vm.count("what") != 0 ? vm["what"].as<std::string>() : "all";
     const bool all = what == "all";
+    if (what == "formats") {
+        print_formats(std::cout);
+        return exit_ok;
+    }
     if (!all && what != "algorithms" && what != "problems" && what != "studies") {
         std::cerr << "mhbench list: unknown list '" << what << "'; known: algorithms, problems, studies\n";
         return exit_usage;

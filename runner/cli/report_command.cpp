@@ -15,6 +15,7 @@
 #include "results/store/study_data.hpp"
 #include "results/store/study_files.hpp"
 #include "runner/cli/command.hpp"
+#include "runner/cli/format_option.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/execution/companion_files.hpp"
 #include "runner/execution/study_lock.hpp"
@@ -69,7 +70,7 @@ struct ReportCommandLine {
     std::string study_dir;
     std::string out_dir;
     std::string reference;
-    std::string formats = "md,tex,csv";
+    std::string formats = default_format_option();
     double alpha = 0.05;
     std::string ioh_precision = "ioh";
 };
@@ -104,8 +105,7 @@ po::options_description report_options(ReportCommandLine& given) {
         "no-figures", "write tables and curve data only (index.html says so; it shows figures an earlier "
                       "report drew, marked as such)")(
         "open", "print index.html's path and open it in a browser (xdg-open) when a display is available")(
-        "format", po::value(&given.formats)->default_value(given.formats),
-        "table formats to write: any of md,tex,csv")(
+        "format", po::value(&given.formats)->default_value(given.formats), format_option_help().c_str())(
         "ioh-precision", po::value(&given.ioh_precision)->default_value(given.ioh_precision),
         "raw_y in the IOHprofiler export (ioh/*.dat): ioh = %.10f, what IOHexperimenter writes (an error "
         "below 5e-11 reads 0); full = every digit (1.234e-12), which IOHanalyzer reads too");
@@ -121,13 +121,7 @@ ReportOptions report_options_of(const ReportCommandLine& given, const po::variab
         options.reference = given.reference;
     options.alpha = given.alpha;
     options.figures = vm.count("no-figures") == 0;
-    options.formats.clear();
-    std::stringstream list(given.formats);
-    for (std::string f; std::getline(list, f, ',');) {
-        const auto first = f.find_first_not_of(' ');
-        if (first != std::string::npos) // "md, tex" is meant as "md,tex"
-            options.formats.insert(f.substr(first, f.find_last_not_of(' ') - first + 1));
-    }
+    options.formats = parse_format_option(given.formats);
     options.plot_script = companion_file("scripts/plot_study.py");
     return options;
 }

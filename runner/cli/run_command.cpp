@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -19,12 +20,14 @@
 #include "problems/core/spec.hpp"
 #include "problems/core/text_excerpt.hpp"
 #include "results/report/report.hpp"
+#include "results/reporters/reporter_registry.hpp"
 #include "results/store/csv.hpp"
 #include "results/store/run_key.hpp"
 #include "results/store/study_data.hpp"
 #include "results/store/study_files.hpp"
 #include "results/store/study_writer.hpp"
 #include "runner/cli/command.hpp"
+#include "runner/cli/format_option.hpp"
 #include "runner/cli/parse_command_line.hpp"
 #include "runner/cli/run_options.hpp"
 #include "runner/distribution/distributed.hpp"
@@ -117,6 +120,7 @@ std::pair<std::int64_t, std::int64_t> report_outcome(const StudySummary& summary
 struct RunSettings {
     int threads = 0; // 0: all hardware threads
     std::optional<ShardSpec> shard;
+    std::set<std::string> formats; // of the report's tables (--format)
 };
 
 RunSettings check_run_settings(const po::variables_map& vm, std::vector<std::string>& errors) {
@@ -142,6 +146,10 @@ RunSettings check_run_settings(const po::variables_map& vm, std::vector<std::str
             errors.emplace_back(e.what());
         }
     }
+    // Checked now, not when the report is built after the whole study has run.
+    settings.formats = parse_format_option(vm["format"].as<std::string>());
+    if (const std::optional<std::string> error = table_format_error(settings.formats))
+        errors.push_back(*error);
     return settings;
 }
 
@@ -291,8 +299,10 @@ TimedOutcome run_with_progress(const PreparedStudy& prepared, StudyWriter& write
 }
 
 // The report, built from the directory alone, exactly as `mhbench report DIR` would.
-int build_study_report(const std::filesystem::path& dir, const po::variables_map& vm, bool quiet) {
+int build_study_report(const std::filesystem::path& dir, const po::variables_map& vm,
+                       const RunSettings& settings, bool quiet) {
     ReportOptions report;
+    report.formats = settings.formats;
     report.figures = !vm["no-figures"].as<bool>();
     report.plot_script = companion_file("scripts/plot_study.py");
     report.stop = &stop_requested; // a Ctrl-C during the tables starts no figure
@@ -366,7 +376,7 @@ int run_into_directory(const PreparedStudy& prepared, const RunSettings& setting
     }
     if (vm["no-report"].as<bool>())
         return exit_ok;
-    return build_study_report(dir, vm, quiet);
+    return build_study_report(dir, vm, settings, quiet);
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "runner/cli/format_option.hpp"
 #include "runner/study/study_file.hpp"
 #include "runner/study/study_options.hpp"
 #include "runner/study/study_presets.hpp"
@@ -59,6 +60,7 @@ po::options_description make_run_options() {
         ("no-report", po::bool_switch(), "do not build the report (tables, curve data, figures) after the study; "
                                          "`mhbench report DIR` builds it at any time")
         ("no-figures", po::bool_switch(), "build the report without figures (they take most of its time)")
+        ("format", po::value<std::string>()->default_value(default_format_option()), format_option_help().c_str())
         ("quiet,q", po::bool_switch(), "print nothing but errors (no progress bar, no summary, no tables)");
     // clang-format on
     po::options_description all;

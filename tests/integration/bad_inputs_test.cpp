@@ -463,6 +463,8 @@ std::vector<BadInputCase> catalogue() {
         {study_copy, "report s --reference cmaes --no-figures", 2, one_line("the study has: ")},
         {study_copy, "report s --format pdf --no-figures", 2,
          stderr_says({"mhbench report: --format: 'pdf' is not one of md, tex, csv"})},
+        {"", "run --algorithms random-search" + tiny_run + " --format md,pdf", 2,
+         stderr_says({"mhbench run: --format: 'pdf' is not one of md, tex, csv"})},
         {study_copy, "report s --ioh-precision 12 --no-figures", 2,
          stderr_says({"mhbench report: --ioh-precision '12' is not one of ioh, full"})},
         {study_copy, "report s --bogus", 2, stderr_says({"mhbench report: unrecognised option '--bogus' (see mhbench report --help)"})},

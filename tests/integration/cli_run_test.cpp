@@ -297,6 +297,15 @@ TEST(CliRun, InterruptKeepsFinishedRunsAndTheSameCommandResumes) {
     fs::remove_all(dir); // 1000-run stores are not worth keeping in /tmp
 }
 
+TEST(CliList, ListsTheOutputFormatsFromTheReporterRegistry) {
+    const CliRunResult r = mhbench("list formats");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* line : {"  md (table format, default)", "  csv (table format, default)",
+                             "  ioh (every report)", "  html (every report)"})
+        EXPECT_NE(r.out.find(std::string("\n") + line + "\n"), std::string::npos) << line << '\n' << r.out;
+    EXPECT_EQ(r.out.find("Algorithms"), std::string::npos); // only what was asked for
+}
+
 TEST(CliList, ListsRandomSearchWithItsParameter) {
     const CliRunResult r = mhbench("list algorithms");
     ASSERT_EQ(r.exit_code, 0) << r.err;

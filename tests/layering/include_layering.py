@@ -19,10 +19,11 @@ Rooms inside a folder:
               (functions/, bbob/, cec/, pmsm/, fluxmap/, external/) includes itself, the top and
               core/, never another family
   results/    the order results/README.md draws: store/ < table_model/ < analysis/ < tables/ <
-              text/, latex/, html/, exports/ < protocols/ < report/, each including only rooms below
-              it; the renderers (text/, latex/, html/) read no analysis and no tables, exports/ no
-              tables (results/exports/README.md), protocols/ no renderer (it builds tables and writes
-              files, results/protocols/README.md); nothing includes report/
+              text/, latex/, html/, exports/ < protocols/ < reporters/ < report/, each including only
+              rooms below it; the renderers (text/, latex/, html/) read no analysis and no tables,
+              exports/ and reporters/ no tables (results/exports/README.md), protocols/ no renderer
+              (it builds tables and writes files, results/protocols/README.md); nothing includes
+              report/
   runner/     the order runner/README.md lists: run/ < study/ < execution/ < distribution/ <
               plugins/ < single_problem/ < cli/, each including only rooms before it; the plug-in
               contract at the top (plugin_api.hpp) includes no runner room
@@ -54,6 +55,10 @@ RESULTS_BELOW = {
     "html": {"html", "table_model", "store"},
     "exports": {"exports", "analysis", "table_model", "store"},
     "protocols": {"protocols", "tables", "exports", "analysis", "table_model", "store"},
+}
+# The reporters hand the renderers and exports what a report made; they build no table themselves.
+RESULTS_BELOW["reporters"] = {
+    "reporters", "protocols", "text", "latex", "html", "exports", "analysis", "table_model", "store"
 }
 RESULTS_BELOW["report"] = set(RESULTS_BELOW) | {"report"}
 
@@ -212,6 +217,10 @@ SELF_TEST_CASES = [
     ("results/report/a.cpp", "problems/core/process/child_process.hpp", True),
     ("results/store/a.cpp", "problems/core/fnv1a.hpp", True),
     ("results/report/a.cpp", "results/html/html_report.hpp", True),
+    ("results/reporters/a.cpp", "results/latex/latex_document.hpp", True),
+    ("results/reporters/a.cpp", "results/tables/comparison_tables.hpp", False),
+    ("results/exports/a.cpp", "results/reporters/reporter.hpp", False),
+    ("results/report/a.cpp", "results/reporters/reporter_registry.hpp", True),
     ("results/a.cpp", "results/store/csv.hpp", False),
     ("runner/run/a.cpp", "runner/study/study.hpp", False),
     ("runner/plugin_api.hpp", "runner/plugins/components.hpp", False),
