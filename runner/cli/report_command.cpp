@@ -105,6 +105,7 @@ po::options_description report_options(ReportCommandLine& given) {
         "no-figures", "write tables and curve data only (index.html says so; it shows figures an earlier "
                       "report drew, marked as such)")(
         "open", "print index.html's path and open it in a browser (xdg-open) when a display is available")(
+        "quiet,q", "print nothing but warnings and errors (the report is written all the same)")(
         "format", po::value(&given.formats)->default_value(given.formats), format_option_help().c_str())(
         "ioh-precision", po::value(&given.ioh_precision)->default_value(given.ioh_precision),
         "raw_y in the IOHprofiler export (ioh/*.dat): ioh = %.10f, what IOHexperimenter writes (an error "
@@ -126,9 +127,10 @@ ReportOptions report_options_of(const ReportCommandLine& given, const po::variab
     return options;
 }
 
-// The report of the study in `study_dir` into `report_dir`, printed, and opened when asked.
+// The report of the study in `study_dir` into `report_dir`, printed unless `quiet`, and opened when
+// asked.
 int write_report(const std::string& study_dir, const std::filesystem::path& report_dir,
-                 const ReportOptions& options, bool open) {
+                 const ReportOptions& options, bool open, bool quiet) {
     if (holds_study_records(report_dir)) {
         std::cerr << "mhbench report: --out " << report_dir.string()
                   << " is a study directory, and a report would replace its records; leave --out out "
@@ -163,7 +165,8 @@ int write_report(const std::string& study_dir, const std::filesystem::path& repo
             std::filesystem::remove_all(report_dir, ec);
         throw;
     }
-    std::cout << printed.str();
+    if (!quiet)
+        std::cout << printed.str();
     if (open)
         open_in_browser(outcome.html);
     // Ctrl-C during the figures: the tables are written, build_report said so in one line on stderr.
@@ -197,7 +200,8 @@ int run_report_command(const std::vector<std::string>& args) {
     const std::filesystem::path report_dir = given.out_dir.empty()
                                                  ? std::filesystem::path(given.study_dir) / "report"
                                                  : std::filesystem::path(given.out_dir);
-    return write_report(given.study_dir, report_dir, report_options_of(given, vm), vm.count("open") != 0);
+    return write_report(given.study_dir, report_dir, report_options_of(given, vm), vm.count("open") != 0,
+                        vm.count("quiet") != 0);
 }
 
 } // namespace mhb::cli

@@ -516,7 +516,7 @@ std::vector<BadInputCase> catalogue() {
          mentions("/drive.csv: sha256 ")}, // the file and both hashes (tests/integration/shards_test.cpp)
 
         // ---- list
-        {"", "list nothing", 2, stderr_says({"mhbench list: unknown list 'nothing'; known: algorithms, problems, studies"})},
+        {"", "list nothing", 2, stderr_says({"mhbench list: unknown list 'nothing'; known: algorithms, problems, studies, formats"})},
         {"", "list --bogus", 2, stderr_says({"mhbench list: unrecognised option '--bogus' (see mhbench list --help)"})},
         {"", "list algorithms problems", 2, one_line("mhbench list: ")},
     };

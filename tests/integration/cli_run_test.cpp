@@ -335,7 +335,30 @@ TEST(CliList, ListsRandomSearchWithItsParameter) {
     EXPECT_NE(bad.exit_code, 0);
     EXPECT_EQ(lines_of(bad.err),
               std::vector<std::string>{
-                  "mhbench list: unknown list 'nothing'; known: algorithms, problems, studies"});
+                  "mhbench list: unknown list 'nothing'; known: algorithms, problems, studies, formats"});
+}
+
+TEST(CliList, ANameShowsThatEntryAloneAndAMisspeltOneTheNearName) {
+    const CliRunResult pmsm = mhbench("list problems pmsm");
+    ASSERT_EQ(pmsm.exit_code, 0) << pmsm.err;
+    EXPECT_EQ(pmsm.out.rfind("  pmsm (version ", 0), 0U) << pmsm.out; // the entry first, no heading
+    EXPECT_NE(pmsm.out.find("      parameter "), std::string::npos) << pmsm.out;
+    EXPECT_EQ(pmsm.out.find("sphere"), std::string::npos); // nothing else
+    EXPECT_NE(pmsm.out.find("Write it as name:key=value,... e.g. pmsm:"), std::string::npos) << pmsm.out;
+
+    const CliRunResult study = mhbench("list studies paper");
+    ASSERT_EQ(study.exit_code, 0) << study.err;
+    EXPECT_EQ(study.out.rfind("  paper\n", 0), 0U) << study.out;
+    EXPECT_EQ(study.out.find("  smoke\n"), std::string::npos);
+
+    const CliRunResult typo = mhbench("list algorithms itlob");
+    EXPECT_EQ(typo.exit_code, 2);
+    EXPECT_EQ(lines_of(typo.err),
+              std::vector<std::string>{"mhbench list: unknown algorithm 'itlob'; did you mean 'itlbo'?"});
+    const CliRunResult kind = mhbench("list algoritms");
+    EXPECT_EQ(kind.exit_code, 2);
+    EXPECT_EQ(lines_of(kind.err),
+              std::vector<std::string>{"mhbench list: unknown list 'algoritms'; did you mean 'algorithms'?"});
 }
 
 TEST(CliHelp, EveryCommandExplainsItself) {
@@ -353,7 +376,7 @@ TEST(CliHelp, EveryCommandExplainsItself) {
 
     const CliRunResult list = mhbench("list --help");
     EXPECT_EQ(list.exit_code, 0);
-    EXPECT_NE(list.out.find("mhbench list [algorithms|problems|studies]"), std::string::npos);
+    EXPECT_NE(list.out.find("mhbench list [algorithms|problems|studies [NAME]]"), std::string::npos);
 }
 
 } // namespace

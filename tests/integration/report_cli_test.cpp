@@ -89,6 +89,16 @@ TEST(ReportCli, WritesTheTablesAndPrintsThemInMarkdown) {
     EXPECT_TRUE(fs::exists(dir / "report" / "curves_iteration.csv"));
 }
 
+TEST(ReportCli, QuietWritesTheReportAndPrintsNothing) {
+    const fs::path dir = small_study_dir("quiet");
+    const Outcome o = run_report_cli("report '" + dir.string() + "' --no-figures -q");
+    EXPECT_EQ(o.exit_code, 0) << o.err;
+    EXPECT_EQ(o.out, "");
+    EXPECT_EQ(o.err, "");
+    EXPECT_TRUE(fs::exists(dir / "report" / "table3_parameters.tex"));
+    EXPECT_TRUE(fs::exists(dir / "report" / "index.html"));
+}
+
 TEST(ReportCli, SeveralBudgetsEachInItsOwnFolderWithLabels) {
     const fs::path dir = small_study_dir("budgets", {"iterations=1", "evaluations=100"});
     const Outcome o = run_report_cli("report '" + dir.string() + "' --no-figures");

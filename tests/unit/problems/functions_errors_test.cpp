@@ -45,9 +45,10 @@ TEST(FunctionErrors, BadClassicParametersNameTheParameterAndItsRange) {
     expect_error("sphere:dim=3000,rotate=1", "sphere: parameter 'rotate' needs dim <= 2000");
 }
 
-TEST(FunctionErrors, UnknownFamiliesListTheKnownOnes) {
-    const std::string message = spec_error_of("rastrigen:dim=3");
-    EXPECT_NE(message.find("unknown problem 'rastrigen'; known: "), std::string::npos) << message;
+TEST(FunctionErrors, AMisspeltFamilyGetsTheNearNameAndAStrangerTheKnownOnes) {
+    EXPECT_EQ(spec_error_of("rastrigen:dim=3"), "unknown problem 'rastrigen'; did you mean 'rastrigin'?");
+    const std::string message = spec_error_of("foxholes:dim=3");
+    EXPECT_NE(message.find("unknown problem 'foxholes'; known: "), std::string::npos) << message;
     for (const char* name : {"sphere", "rastrigin", "schwefel_2_26", "penalized_2", "bbob"})
         EXPECT_NE(message.find(name), std::string::npos) << name;
 }
