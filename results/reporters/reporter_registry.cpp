@@ -21,8 +21,9 @@ namespace {
 
 std::vector<std::shared_ptr<const Reporter>> builtin_reporters() {
     std::vector<std::shared_ptr<const Reporter>> all;
-    for (auto make : {markdown_tables_reporter, latex_tables_reporter, csv_tables_reporter,
-                      console_tables_reporter, protocol_files_reporter, ioh_export_reporter, html_page_reporter})
+    for (auto make :
+         {markdown_tables_reporter, latex_tables_reporter, csv_tables_reporter, console_tables_reporter,
+          protocol_files_reporter, ioh_export_reporter, html_page_reporter})
         all.push_back(make());
     return all;
 }
