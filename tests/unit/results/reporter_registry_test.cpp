@@ -119,7 +119,8 @@ TEST(Reporters, TheBuiltinsAreListedOnceInTheOrderAReportCallsThem) {
     std::vector<std::string> names;
     for (const auto& reporter : reporters())
         names.emplace_back(reporter->name());
-    EXPECT_EQ(names, (std::vector<std::string>{"md", "tex", "csv", "console", "protocol-files", "ioh", "html"}));
+    EXPECT_EQ(names,
+              (std::vector<std::string>{"md", "tex", "csv", "console", "protocol-files", "ioh", "html"}));
     EXPECT_EQ(table_format_names(), (std::vector<std::string>{"md", "tex", "csv"}));
     EXPECT_EQ(default_table_formats(), (std::set<std::string>{"md", "tex", "csv"}));
     EXPECT_EQ(ReportOptions().formats, default_table_formats());
