@@ -262,7 +262,7 @@ int run_merge_command(const std::vector<std::string>& args) {
     }
     StudyWriter writer(out, first.data.study_text,
                        merged_context(by_index, prepared, vm["threads"].as<int>(), args),
-                       prepared.parameter_columns, vm["overwrite"].as<bool>(), prepared.algorithms,
+                       prepared.parameter_columns, vm["overwrite"].as<bool>(), prepared.algorithm_infos(),
                        study_run_keys(prepared));
     fs::remove(out / StudyFiles::shard); // the merged study is whole, even where a shard was replaced
     for (const auto& [index, shard] : by_index)

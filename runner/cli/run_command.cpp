@@ -251,9 +251,9 @@ std::string session_context(const PreparedStudy& prepared, const RunSettings& se
 // What a problem knows to be doubtful about itself (an optimum on a face of the box) is said
 // before the runs, once per problem.
 void print_problem_warnings(const PreparedStudy& prepared) {
-    for (std::size_t p = 0; p < prepared.problems.size(); ++p)
-        for (const std::string& warning : prepared.problems[p]->warnings())
-            std::cerr << "mhbench run: warning: " << prepared.problem_specs[p] << ": " << warning << '\n';
+    for (const PreparedProblem& problem : prepared.problems)
+        for (const std::string& warning : problem.problem->warnings())
+            std::cerr << "mhbench run: warning: " << problem.spec << ": " << warning << '\n';
 }
 
 struct TimedOutcome {
@@ -343,7 +343,7 @@ int run_into_directory(const PreparedStudy& prepared, const RunSettings& setting
     keys.recompute_changed = vm["recompute-changed"].as<bool>();
     keys.run_ids = shard_runs; // a shard's directory holds its runs only
     StudyWriter writer(dir, study_ini(prepared.study), context, prepared.parameter_columns, overwrite,
-                       prepared.algorithms, std::move(keys));
+                       prepared.algorithm_infos(), std::move(keys));
     for (const std::string& warning : writer.warnings())
         std::cerr << "mhbench run: warning: " << warning << '\n';
     if (const std::int64_t retried = writer.retried_failures(); retried > 0)

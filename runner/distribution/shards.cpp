@@ -36,7 +36,7 @@ std::string shard_text(const ShardSpec& shard) {
 }
 
 std::vector<double> estimated_run_costs(const PreparedStudy& study) {
-    const std::size_t algorithms = study.optimizers.size();
+    const std::size_t algorithms = study.algorithms.size();
     const std::size_t problems = study.problems.size();
     const std::int64_t runs = study.study.runs;
     std::vector<double> cost(static_cast<std::size_t>(study.run_count()), 0.0);
@@ -45,7 +45,7 @@ std::vector<double> estimated_run_costs(const PreparedStudy& study) {
     std::map<std::tuple<std::size_t, std::size_t, Eigen::Index>, double> evaluations;
     for (std::size_t b = 0; b < study.study.budgets.size(); ++b) {
         for (std::size_t p = 0; p < problems; ++p) {
-            const Eigen::Index dimension = study.problems[p]->dimension();
+            const Eigen::Index dimension = study.problems[p].problem->dimension();
             const Budget budget = study.budget_for(b, p);
             for (std::size_t a = 0; a < algorithms; ++a) {
                 const auto first = static_cast<std::int64_t>((b * problems + p) * algorithms + a) * runs;

@@ -153,11 +153,11 @@ std::string context_with_history(const std::string& current, const std::string& 
            earlier_sessions + context_sessions(current);
 }
 
-std::string context_data_files(const std::vector<std::unique_ptr<Problem>>& problems) {
+std::string context_data_files(const std::vector<PreparedProblem>& problems) {
     std::string text;
     std::set<std::string> seen;
-    for (const auto& problem : problems)
-        for (const auto& file : problem->data_files())
+    for (const PreparedProblem& problem : problems)
+        for (const auto& file : problem.problem->data_files())
             // Absolute, so that shards and ranks started from other directories compare by file.
             if (const std::string path = std::filesystem::absolute(file.path).lexically_normal().string();
                 seen.insert(file.sha256 + " " + path).second)

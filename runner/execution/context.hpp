@@ -7,12 +7,11 @@
 // computed the earlier runs.
 #pragma once
 
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "problems/problem.hpp"
+#include "runner/study/prepared_components.hpp"
 
 namespace mhb {
 
@@ -43,6 +42,6 @@ std::string context_with_history(const std::string& current, const std::string& 
 
 // "data_file = SHA256 PATH" for each data file of the study's problems (each file once, its path
 // made absolute): which exact content a study read, for the record.
-std::string context_data_files(const std::vector<std::unique_ptr<Problem>>& problems);
+std::string context_data_files(const std::vector<PreparedProblem>& problems);
 
 } // namespace mhb

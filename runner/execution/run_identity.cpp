@@ -2,7 +2,6 @@
 
 #include <map>
 #include <sstream>
-#include <vector>
 
 #include "problems/core/sha256.hpp"
 
@@ -29,22 +28,19 @@ std::string value_or(const std::map<std::string, std::string>& values, const std
 
 // The fact line of an implementation version. Version 1 adds none, so that the runs stored
 // before versions existed keep their identity; from 2 on it changes every identity.
-std::string version_fact(const std::string& name, const std::vector<int>& versions, std::size_t i) {
-    const int version = i < versions.size() ? versions[i] : 1;
+std::string version_fact(const std::string& name, int version) {
     return version > 1 ? name + " = " + std::to_string(version) + '\n' : std::string();
 }
 
 // The fact line of a plug-in module's content; none for a built-in component, whose runs keep
 // the identity they had before plug-ins existed.
-std::string module_fact(const std::string& name, const std::vector<DataFile>& modules, std::size_t i) {
-    return i < modules.size() && !modules[i].sha256.empty() ? name + " = " + modules[i].sha256 + '\n'
-                                                            : std::string();
+std::string module_fact(const std::string& name, const DataFile& module) {
+    return module.sha256.empty() ? std::string() : name + " = " + module.sha256 + '\n';
 }
 
 // The note naming a plug-in module's file, for messages.
-std::string module_note(const std::string& name, const std::vector<DataFile>& modules, std::size_t i) {
-    return i < modules.size() && !modules[i].path.empty() ? name + " = " + modules[i].path + '\n'
-                                                          : std::string();
+std::string module_note(const std::string& name, const DataFile& module) {
+    return module.path.empty() ? std::string() : name + " = " + module.path + '\n';
 }
 
 // The fact line of an external program's code and announced version (Problem::identity_facts,
@@ -63,34 +59,31 @@ std::string component_name(const std::string& spec) {
 RunKey run_key(const PreparedStudy& study, std::int64_t run_id) {
     const RunRequest request = study.request(run_id);
     const PreparedStudy::RunCell cell = study.cell(run_id);
-    const std::size_t a = cell.algorithm;
-    const std::size_t p = cell.problem;
+    const PreparedAlgorithm& algorithm = study.algorithms[cell.algorithm];
+    const PreparedProblem& problem = study.problems[cell.problem];
     RunKey key;
     key.algorithm = request.algorithm_spec;
     key.problem = request.problem_spec;
     key.facts = "format = " + std::to_string(store_format_version) + '\n' +
                 "algorithm = " + request.algorithm_spec + '\n' +
-                version_fact("algorithm version", study.algorithm_versions, a) +
-                module_fact("algorithm module", study.algorithm_modules, a) +
-                program_fact("algorithm program",
-                             a < study.optimizers.size() ? study.optimizers[a]->identity_facts() : "") +
-                "problem = " + study.problem_identities[p] + '\n' +
-                version_fact("problem version", study.problem_versions, p) +
-                module_fact("problem module", study.problem_modules, p) +
-                program_fact("problem program", study.problems[p]->identity_facts()) +
+                version_fact("algorithm version", algorithm.version) +
+                module_fact("algorithm module", algorithm.module) +
+                program_fact("algorithm program", algorithm.optimizer->identity_facts()) +
+                "problem = " + problem.identity + '\n' + version_fact("problem version", problem.version) +
+                module_fact("problem module", problem.module) +
+                program_fact("problem program", problem.problem->identity_facts()) +
                 "budget = " + request.budget_text + '\n' + "run = " + std::to_string(request.run_index) +
                 '\n' + "seed = " + std::to_string(request.seed) + '\n';
     key.identity = sha256_hex(key.facts);
-    const std::string& label =
-        a < study.algorithms.size() ? study.algorithms[a].label : request.algorithm_spec;
+    const std::string& label = algorithm.info.label;
     key.slot = label + " | " + request.problem_spec + " | " + request.budget_text + " | " +
                std::to_string(request.run_index);
     key.notes = "label = " + label + '\n' + "problem as written = " + request.problem_spec + '\n' +
                 "study seed = " + std::to_string(study.study.seed) + '\n' +
                 "seeds = " + std::string(seed_mode_name(study.study.seeds)) + '\n' +
-                module_note("algorithm module file", study.algorithm_modules, a) +
-                module_note("problem module file", study.problem_modules, p);
-    const auto files = study.problems[p]->data_files();
+                module_note("algorithm module file", algorithm.module) +
+                module_note("problem module file", problem.module);
+    const auto files = problem.problem->data_files();
     for (std::size_t i = 0; i < files.size(); ++i)
         key.notes +=
             "data file " + std::to_string(i + 1) + " = " + files[i].sha256 + " " + files[i].path + '\n';
@@ -103,7 +96,7 @@ StudyRunKeys study_run_keys(const PreparedStudy& study) {
     keys.key = [&study](std::int64_t run_id) { return run_key(study, run_id); };
     keys.names = [&study](std::int64_t run_id) {
         const PreparedStudy::RunCell c = study.cell(run_id);
-        return std::make_pair(study.algorithm_specs[c.algorithm], study.problem_specs[c.problem]);
+        return std::make_pair(study.algorithms[c.algorithm].info.spec, study.problems[c.problem].spec);
     };
     keys.describe_change = describe_run_change;
     return keys;

@@ -24,7 +24,7 @@ std::vector<std::pair<std::size_t, double>> calibration_sample(const PreparedStu
                                                                std::size_t per_dimension) {
     std::map<Eigen::Index, std::vector<std::size_t>> by_dimension;
     for (std::size_t p = 0; p < study.problems.size(); ++p)
-        by_dimension[study.problems[p]->dimension()].push_back(p);
+        by_dimension[study.problems[p].problem->dimension()].push_back(p);
     std::vector<std::pair<std::size_t, double>> sample;
     for (const auto& [dimension, group] : by_dimension) {
         const std::size_t count = std::min(group.size(), std::max<std::size_t>(per_dimension, 1));
@@ -102,7 +102,7 @@ struct Calibration {
 std::vector<Calibration> run_calibrations(const PreparedStudy& study,
                                           const std::vector<std::pair<std::size_t, double>>& sample,
                                           int threads) {
-    const std::size_t algorithms = study.optimizers.size();
+    const std::size_t algorithms = study.algorithms.size();
     const std::size_t problems = study.problems.size();
     std::vector<Calibration> calibrations;
     for (std::size_t b = 0; b < study.study.budgets.size(); ++b)
@@ -131,7 +131,7 @@ std::vector<Calibration> run_calibrations(const PreparedStudy& study,
 
 StudyEstimate estimate_study(const PreparedStudy& study, int threads, std::size_t problems_per_dimension) {
     const auto calibration_started = std::chrono::steady_clock::now();
-    const std::size_t algorithms = study.optimizers.size();
+    const std::size_t algorithms = study.algorithms.size();
     const double runs = static_cast<double>(study.study.runs);
     const std::vector<Calibration> calibrations =
         run_calibrations(study, calibration_sample(study, problems_per_dimension), threads);

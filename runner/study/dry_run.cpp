@@ -41,9 +41,14 @@ std::string algorithm_shares(const PreparedStudy& prepared, const StudyEstimate&
     for (const std::size_t a : order) {
         char share[16];
         std::snprintf(share, sizeof share, " %.0f%%", 100.0 * seconds[a] / total);
-        out += (out.empty() ? "" : ", ") + prepared.algorithms[a].label + share;
+        out += (out.empty() ? "" : ", ") + prepared.algorithms[a].info.label + share;
     }
     return out;
+}
+
+// "1 problem", "3 problems".
+std::string counted(std::size_t n, const char* noun) {
+    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
 }
 
 } // namespace
@@ -52,25 +57,27 @@ std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::p
     std::ostringstream out;
     const Study& s = prepared.study;
     out << "mhbench run --dry-run: nothing is run or written.\n\n"
-        << "study: " << prepared.optimizers.size() << " algorithms x " << prepared.problems.size()
-        << " problems x " << s.budgets.size() << " budget" << (s.budgets.size() == 1 ? "" : "s") << " x "
-        << s.runs << " runs = " << prepared.run_count() << " runs; seed " << s.seed << ", seeds "
+        << "study: " << counted(prepared.algorithms.size(), "algorithm") << " x "
+        << counted(prepared.problems.size(), "problem") << " x " << counted(s.budgets.size(), "budget")
+        << " x " << counted(static_cast<std::size_t>(s.runs), "run") << " = "
+        << counted(static_cast<std::size_t>(prepared.run_count()), "run") << "; seed " << s.seed << ", seeds "
         << seed_mode_name(s.seeds)
         << (s.seeds == SeedMode::common ? " (every algorithm starts run r from the same stream)\n"
                                         : " (each algorithm its own streams)\n");
     std::size_t width = 5;
     for (const auto& a : prepared.algorithms)
-        width = std::max(width, a.label.size());
+        width = std::max(width, a.info.label.size());
     out << "\nalgorithms (label, canonical spec):\n";
     for (const auto& a : prepared.algorithms)
-        out << "  " << a.label << std::string(width - a.label.size() + 2, ' ') << a.spec << '\n';
-    out << "\nproblems (" << prepared.problem_specs.size() << "):\n";
-    const std::size_t shown = prepared.problem_specs.size() > 12 ? 10 : prepared.problem_specs.size();
+        out << "  " << a.info.label << std::string(width - a.info.label.size() + 2, ' ') << a.info.spec
+            << '\n';
+    out << "\nproblems (" << prepared.problems.size() << "):\n";
+    const std::size_t shown = prepared.problems.size() > 12 ? 10 : prepared.problems.size();
     for (std::size_t p = 0; p < shown; ++p)
-        out << "  " << prepared.problem_specs[p] << '\n';
-    if (shown < prepared.problem_specs.size())
-        out << "  ... and " << prepared.problem_specs.size() - shown << " more, to "
-            << prepared.problem_specs.back() << '\n';
+        out << "  " << prepared.problems[p].spec << '\n';
+    if (shown < prepared.problems.size())
+        out << "  ... and " << prepared.problems.size() - shown << " more, to "
+            << prepared.problems.back().spec << '\n';
     const StudyEstimate estimate = estimate_study(prepared, threads);
     out << "\nbudgets:\n";
     for (std::size_t b = 0; b < s.budgets.size(); ++b) {
@@ -81,7 +88,7 @@ std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::p
             // Each D with its first problem, whose budget says the count.
             std::map<std::int64_t, std::size_t> dimensions;
             for (std::size_t p = 0; p < prepared.problems.size(); ++p)
-                dimensions.emplace(prepared.problems[p]->dimension(), p);
+                dimensions.emplace(prepared.problems[p].problem->dimension(), p);
             out << " (per run:";
             for (const auto& [d, p] : dimensions)
                 out << (d == dimensions.begin()->first ? " " : ", ")

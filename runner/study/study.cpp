@@ -59,11 +59,11 @@ void check_targets(const PreparedStudy& prepared, std::vector<std::string>& erro
                                       [](const StudyBudget& b) { return b.relative_target.has_value(); });
     if (!absolute && !relative)
         return;
-    for (std::size_t p = 0; p < prepared.problems.size(); ++p) {
-        if (!prepared.problems[p])
+    for (const PreparedProblem& problem : prepared.problems) {
+        if (!problem.problem)
             continue;
-        const std::string& spec = prepared.problem_specs[p];
-        const auto optimum = prepared.problems[p]->known_optimum();
+        const std::string& spec = problem.spec;
+        const auto optimum = problem.problem->known_optimum();
         if (!optimum) {
             errors.push_back(std::string("budget: a ") + (relative && !absolute ? "relative " : "") +
                              "target needs a known optimum; problem '" + spec + "' has none");
@@ -174,11 +174,12 @@ void prepare_algorithms(const Study& study, const AlgorithmRegistry& registry, P
                 }
                 where_spec[canonical] = variant.text;
                 where_label[label] = canonical;
-                prepared.optimizers.push_back(registry.create(spec));
-                prepared.algorithm_specs.push_back(canonical);
-                prepared.algorithm_versions.push_back(entry.version);
-                prepared.algorithm_modules.push_back({entry.module_path, entry.module_sha256});
-                prepared.algorithms.push_back({canonical, label, registry.full(spec).canonical()});
+                PreparedAlgorithm algorithm;
+                algorithm.optimizer = registry.create(spec);
+                algorithm.info = {canonical, label, registry.full(spec).canonical()};
+                algorithm.version = entry.version;
+                algorithm.module = {entry.module_path, entry.module_sha256};
+                prepared.algorithms.push_back(std::move(algorithm));
                 prepared.study.algorithms.push_back(with_label(canonical, label));
             } catch (const std::exception& e) {
                 add_lines(errors, origin, e.what());
@@ -266,13 +267,15 @@ void prepare_problems(const Study& study, const ProblemRegistry& registry, Prepa
                         continue;
                     }
                     where_full[full] = canonical;
-                    prepared.problems.push_back(registry.create(one));
-                    prepared.problem_specs.push_back(canonical);
-                    prepared.problem_versions.push_back(registry.find(one.name).version);
-                    prepared.problem_modules.push_back(
-                        {registry.find(one.name).module_path, registry.find(one.name).module_sha256});
-                    prepared.problem_identities.push_back(
-                        content_identity(Spec::parse(canonical), prepared.problems.back()->data_files()));
+                    PreparedProblem problem;
+                    problem.problem = registry.create(one);
+                    problem.spec = canonical;
+                    const ProblemRegistry::Entry& entry = registry.find(one.name);
+                    problem.version = entry.version;
+                    problem.module = {entry.module_path, entry.module_sha256};
+                    problem.identity =
+                        content_identity(Spec::parse(canonical), problem.problem->data_files());
+                    prepared.problems.push_back(std::move(problem));
                 } catch (const std::exception& e) {
                     add_lines(errors, origin, e.what());
                 }
@@ -288,8 +291,8 @@ void check_dimension_budgets(const PreparedStudy& prepared, std::vector<std::str
             continue;
         std::map<std::int64_t, std::pair<std::string, std::size_t>> missing; // D -> first problem, count
         std::set<std::int64_t> too_many; // N x D beyond the most a budget may give, said once per D
-        for (std::size_t p = 0; p < prepared.problems.size(); ++p) {
-            const std::int64_t dimension = prepared.problems[p]->dimension();
+        for (const PreparedProblem& problem : prepared.problems) {
+            const std::int64_t dimension = problem.problem->dimension();
             try {
                 if (budget.evaluations_by_dimension->at(dimension))
                     continue;
@@ -300,7 +303,7 @@ void check_dimension_budgets(const PreparedStudy& prepared, std::vector<std::str
             }
             auto& [first, count] = missing[dimension];
             if (count++ == 0)
-                first = prepared.problem_specs[p];
+                first = problem.spec;
         }
         for (const auto& [dimension, first_and_count] : missing)
             errors.push_back("budget '" + budget_text(budget) + "' gives no evaluations at dimension " +
@@ -317,12 +320,12 @@ void check_dimension_budgets(const PreparedStudy& prepared, std::vector<std::str
 // optimiser and dimension, rather than as a failure of each of its runs.
 void check_optimizer_dimensions(const PreparedStudy& prepared, std::vector<std::string>& errors) {
     std::set<Eigen::Index> dimensions;
-    for (const auto& problem : prepared.problems)
-        if (problem)
-            dimensions.insert(problem->dimension());
-    for (const auto& optimizer : prepared.optimizers)
+    for (const PreparedProblem& problem : prepared.problems)
+        if (problem.problem)
+            dimensions.insert(problem.problem->dimension());
+    for (const PreparedAlgorithm& algorithm : prepared.algorithms)
         for (const Eigen::Index dimension : dimensions)
-            if (auto refusal = optimizer->refusal(dimension);
+            if (auto refusal = algorithm.optimizer->refusal(dimension);
                 refusal && std::find(errors.begin(), errors.end(), *refusal) == errors.end())
                 errors.push_back(std::move(*refusal));
 }
@@ -336,8 +339,8 @@ void check_protocol(const PreparedStudy& prepared, std::vector<std::string>& err
         return;
     }
     ProtocolStudy study;
-    for (const auto& problem : prepared.problem_specs)
-        study.problems.push_back({problem, Spec::parse(problem).name});
+    for (const PreparedProblem& problem : prepared.problems)
+        study.problems.push_back({problem.spec, Spec::parse(problem.spec).name});
     for (const StudyBudget& budget : prepared.study.budgets)
         study.budgets.push_back(
             {budget_text(budget), budget.max_evaluations || budget.evaluations_by_dimension});
@@ -352,14 +355,22 @@ std::string_view seed_mode_name(SeedMode mode) {
 }
 
 std::int64_t PreparedStudy::run_count() const {
-    return static_cast<std::int64_t>(problems.size() * optimizers.size() * study.budgets.size()) * study.runs;
+    return static_cast<std::int64_t>(problems.size() * algorithms.size() * study.budgets.size()) * study.runs;
+}
+
+std::vector<AlgorithmInfo> PreparedStudy::algorithm_infos() const {
+    std::vector<AlgorithmInfo> infos;
+    infos.reserve(algorithms.size());
+    for (const PreparedAlgorithm& algorithm : algorithms)
+        infos.push_back(algorithm.info);
+    return infos;
 }
 
 PreparedStudy::RunCell PreparedStudy::cell(std::int64_t run_id) const {
     if (run_id < 0 || run_id >= run_count())
         throw std::out_of_range("run_id " + std::to_string(run_id) + " is outside [0, " +
                                 std::to_string(run_count()) + ")");
-    const auto algorithm_count = static_cast<std::int64_t>(optimizers.size());
+    const auto algorithm_count = static_cast<std::int64_t>(algorithms.size());
     const auto problem_count = static_cast<std::int64_t>(problems.size());
     const std::int64_t pair = run_id / study.runs; // (budget * problems + problem) * algorithms + algorithm
     RunCell c;
@@ -372,7 +383,7 @@ PreparedStudy::RunCell PreparedStudy::cell(std::int64_t run_id) const {
 
 Budget PreparedStudy::budget_for(std::size_t budget, std::size_t problem) const {
     const StudyBudget& b = study.budgets.at(budget);
-    const Problem& p = *problems.at(problem);
+    const Problem& p = *problems.at(problem).problem;
     // f* is asked for only where a target is relative to it (an output-error f* costs a simulation).
     std::optional<double> f_opt;
     if (b.relative_target)
@@ -383,20 +394,20 @@ Budget PreparedStudy::budget_for(std::size_t budget, std::size_t problem) const 
 
 RunRequest PreparedStudy::request(std::int64_t run_id) const {
     const RunCell c = cell(run_id);
-    const std::size_t a = c.algorithm;
-    const std::size_t p = c.problem;
+    const PreparedAlgorithm& algorithm = algorithms[c.algorithm];
+    const PreparedProblem& problem = problems[c.problem];
     RunRequest r;
-    r.optimizer = optimizers[a].get();
-    r.problem = problems[p].get();
-    r.algorithm_spec = algorithm_specs[a];
-    r.problem_spec = problem_specs[p];
+    r.optimizer = algorithm.optimizer.get();
+    r.problem = problem.problem.get();
+    r.algorithm_spec = algorithm.info.spec;
+    r.problem_spec = problem.spec;
     r.run_id = run_id;
     r.run_index = c.run_index;
     const auto index = static_cast<std::uint64_t>(c.run_index);
     r.seed = study.seeds == SeedMode::common
-                 ? derive_seed(study.seed, problem_identities[p], index)
-                 : derive_seed(study.seed, algorithm_specs[a], problem_identities[p], index);
-    r.budget = budget_for(c.budget, p);
+                 ? derive_seed(study.seed, problem.identity, index)
+                 : derive_seed(study.seed, algorithm.info.spec, problem.identity, index);
+    r.budget = budget_for(c.budget, c.problem);
     r.budget_text = budget_texts[c.budget];
     return r;
 }
@@ -438,8 +449,8 @@ PreparedStudy prepare_study(const Study& study, const AlgorithmRegistry& algorit
         throw std::invalid_argument(joined);
     }
 
-    for (const auto& problem : prepared.problems)
-        for (const auto& name : problem->parameter_names())
+    for (const PreparedProblem& problem : prepared.problems)
+        for (const auto& name : problem.problem->parameter_names())
             if (std::find(prepared.parameter_columns.begin(), prepared.parameter_columns.end(), name) ==
                 prepared.parameter_columns.end())
                 prepared.parameter_columns.push_back(name);

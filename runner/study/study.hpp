@@ -4,7 +4,7 @@
 // optimiser and problem once, to be shared read-only by all their runs.
 //
 // Paths in `data=` are made absolute in `study.problems` (what study.ini stores), so a study
-// file works from any directory; problem_specs keep them as written.
+// file works from any directory; each PreparedProblem::spec keeps them as written.
 //
 // Run numbering is fixed: run_id = ((budget * problems + problem) * algorithms + algorithm) * runs
 // + run index, in the order the specs are listed (grids and ranges expanded in place). Seeds come
@@ -25,6 +25,7 @@
 #include "problems/problem_registry.hpp"
 #include "results/store/algorithm_info.hpp"
 #include "runner/run/execute_run.hpp"
+#include "runner/study/prepared_components.hpp"
 #include "runner/study/study_budget.hpp"
 
 namespace mhb {
@@ -67,28 +68,16 @@ inline constexpr std::int64_t max_runs_per_pair = 1000000;
 
 // A validated study, ready to run.
 struct PreparedStudy {
-    Study study;                              // grids expanded, specs canonical: what study files store
-    std::vector<std::string> algorithm_specs; // canonical (Registry::minimal), one per optimiser
-    std::vector<AlgorithmInfo> algorithms;    // spec, label and full spec of each optimiser
-    std::vector<std::string> problem_specs;   // canonical (Registry::normalised), ranges expanded
-    // The same with each data file named by its SHA-256 instead of its path: what the problem's
-    // runs depend on (seeds and run identities use it, so moving a file changes nothing and
-    // editing one is noticed).
-    std::vector<std::string> problem_identities;
-    std::vector<std::string> budget_texts; // budget_text of each budget
-    // The implementation version (Registry Entry::version) of each optimiser and each problem.
-    std::vector<int> algorithm_versions;
-    std::vector<int> problem_versions;
-    // The plug-in module that provides each optimiser and each problem (path and SHA-256), both
-    // empty for a built-in one: the module's hash joins the identity of every run it made.
-    std::vector<DataFile> algorithm_modules;
-    std::vector<DataFile> problem_modules;
-    std::vector<std::unique_ptr<Optimizer>> optimizers;
-    std::vector<std::unique_ptr<Problem>> problems;
+    Study study;                               // grids expanded, specs canonical: what study files store
+    std::vector<PreparedAlgorithm> algorithms; // in the order of the specs, grids expanded
+    std::vector<PreparedProblem> problems;     // in the order of the specs, grids and ranges expanded
+    std::vector<std::string> budget_texts;     // budget_text of each of study.budgets
     // Union of the problems' parameter names, in order of first appearance (runs.csv columns).
     std::vector<std::string> parameter_columns;
 
     [[nodiscard]] std::int64_t run_count() const;
+    // The spec, label and full spec of each algorithm (algorithms.csv).
+    [[nodiscard]] std::vector<AlgorithmInfo> algorithm_infos() const;
     // Which algorithm, problem and budget (indices into the vectors above) and which repetition
     // run `run_id` is, by the fixed numbering; throws std::out_of_range outside [0, run_count()).
     struct RunCell {

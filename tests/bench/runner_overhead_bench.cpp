@@ -60,7 +60,7 @@ void BM_RunnerOverhead(benchmark::State& state) {
     options.threads = static_cast<int>(state.range(0));
     for (auto _ : state) {
         mhb::StudyWriter writer(dir, mhb::study_ini(study.study), "benchmark\n", study.parameter_columns,
-                                true, study.algorithms, mhb::study_run_keys(study));
+                                true, study.algorithm_infos(), mhb::study_run_keys(study));
         benchmark::DoNotOptimize(mhb::run_study(study, writer, options).kept);
     }
     per_run(state);
@@ -91,11 +91,11 @@ void BM_ShardsMerged(benchmark::State& state) {
     const auto shards = mhb::shard_run_ids(study, 3);
     for (auto _ : state) {
         mhb::StudyWriter merged(scratch("merged"), text, "benchmark\n", study.parameter_columns, true,
-                                study.algorithms, mhb::study_run_keys(study));
+                                study.algorithm_infos(), mhb::study_run_keys(study));
         for (std::size_t i = 0; i < shards.size(); ++i) {
             const fs::path dir = scratch("shard" + std::to_string(i));
-            mhb::StudyWriter writer(dir, text, "benchmark\n", study.parameter_columns, true, study.algorithms,
-                                    mhb::study_run_keys(study));
+            mhb::StudyWriter writer(dir, text, "benchmark\n", study.parameter_columns, true,
+                                    study.algorithm_infos(), mhb::study_run_keys(study));
             mhb::RunnerOptions options;
             options.threads = 1;
             options.run_ids = shards[i];
@@ -116,15 +116,15 @@ void BM_Rerender(benchmark::State& state) {
     const fs::path dir = scratch("rerender");
     const std::string text = mhb::study_ini(study.study);
     {
-        mhb::StudyWriter writer(dir, text, "benchmark\n", study.parameter_columns, true, study.algorithms,
-                                mhb::study_run_keys(study));
+        mhb::StudyWriter writer(dir, text, "benchmark\n", study.parameter_columns, true,
+                                study.algorithm_infos(), mhb::study_run_keys(study));
         (void)mhb::run_study(study, writer);
     }
     mhb::RunnerOptions options;
     options.threads = static_cast<int>(state.range(0));
     for (auto _ : state) {
-        mhb::StudyWriter writer(dir, text, "benchmark\n", study.parameter_columns, false, study.algorithms,
-                                mhb::study_run_keys(study));
+        mhb::StudyWriter writer(dir, text, "benchmark\n", study.parameter_columns, false,
+                                study.algorithm_infos(), mhb::study_run_keys(study));
         benchmark::DoNotOptimize(mhb::run_study(study, writer, options).resumed);
     }
     per_run(state);

@@ -36,16 +36,20 @@ std::vector<std::string> gather_texts(const std::string& text, const MpiSession&
 // program announced of itself (its code's SHA-256 and version: Optimizer/Problem::identity_facts).
 std::string rank_inputs(const PreparedStudy& study) {
     std::string text = context_data_files(study.problems);
-    for (const auto* modules : {&study.algorithm_modules, &study.problem_modules})
-        for (const DataFile& module : *modules)
-            if (!module.sha256.empty())
-                text += "data_file = " + module.sha256 + " " + module.path + '\n';
-    for (std::size_t a = 0; a < study.optimizers.size(); ++a)
-        if (const std::string facts = study.optimizers[a]->identity_facts(); !facts.empty())
-            text += "program of " + study.algorithms[a].spec + " = " + facts + '\n';
-    for (std::size_t p = 0; p < study.problems.size(); ++p)
-        if (const std::string facts = study.problems[p]->identity_facts(); !facts.empty())
-            text += "program of " + study.problem_specs[p] + " = " + facts + '\n';
+    const auto add_module = [&text](const DataFile& module) {
+        if (!module.sha256.empty())
+            text += "data_file = " + module.sha256 + " " + module.path + '\n';
+    };
+    for (const PreparedAlgorithm& algorithm : study.algorithms)
+        add_module(algorithm.module);
+    for (const PreparedProblem& problem : study.problems)
+        add_module(problem.module);
+    for (const PreparedAlgorithm& algorithm : study.algorithms)
+        if (const std::string facts = algorithm.optimizer->identity_facts(); !facts.empty())
+            text += "program of " + algorithm.info.spec + " = " + facts + '\n';
+    for (const PreparedProblem& problem : study.problems)
+        if (const std::string facts = problem.problem->identity_facts(); !facts.empty())
+            text += "program of " + problem.spec + " = " + facts + '\n';
     return text;
 }
 

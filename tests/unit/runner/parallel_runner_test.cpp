@@ -103,7 +103,7 @@ TEST(ParallelRunner, NestedPopulationEvaluationGivesTheRecordsOfOneThread) {
     s.seed = 3;
     s.budgets.front().max_evaluations = 600;
     const PreparedStudy study = prepare_study(s);
-    ASSERT_TRUE(study.problems.front()->parallel_evaluation());
+    ASSERT_TRUE(study.problems.front().problem->parallel_evaluation());
     const fs::path one = fresh_dir("nested1");
     const fs::path two = fresh_dir("nested2");
     RunnerOptions options;

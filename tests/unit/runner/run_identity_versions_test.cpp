@@ -59,7 +59,7 @@ Registry<Product> from_module(const Registry<Product>& builtin, const std::strin
 
 // Writes every run of `study` into a study directory at `dir`.
 void write_every_run_into(const std::filesystem::path& dir, const PreparedStudy& study) {
-    StudyWriter writer(dir, "study", "", study.parameter_columns, false, study.algorithms,
+    StudyWriter writer(dir, "study", "", study.parameter_columns, false, study.algorithm_infos(),
                        study_run_keys(study));
     for (std::int64_t id = 0; id < study.run_count(); ++id)
         writer.append(execute_run(study.request(id)), 0.0);
@@ -69,7 +69,7 @@ void write_every_run_into(const std::filesystem::path& dir, const PreparedStudy&
 // The message of the std::runtime_error StudyWriter throws for `study` in `dir`, or "".
 std::string refusal(const std::filesystem::path& dir, const PreparedStudy& study) {
     try {
-        StudyWriter writer(dir, "study", "", study.parameter_columns, false, study.algorithms,
+        StudyWriter writer(dir, "study", "", study.parameter_columns, false, study.algorithm_infos(),
                            study_run_keys(study));
     } catch (const std::runtime_error& e) {
         return e.what();
@@ -125,7 +125,7 @@ TEST(RunIdentityVersions, ExtendingRunsOfAnotherVersionIsRefusedUnlessRecomputed
 
     StudyRunKeys keys = study_run_keys(v2);
     keys.recompute_changed = true;
-    const StudyWriter writer(dir, "study", "", v2.parameter_columns, false, v2.algorithms, keys);
+    const StudyWriter writer(dir, "study", "", v2.parameter_columns, false, v2.algorithm_infos(), keys);
     EXPECT_TRUE(writer.completed().empty()); // every run of version 1 is computed again
 }
 

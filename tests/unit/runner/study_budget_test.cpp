@@ -76,7 +76,7 @@ TEST(StudyBudget, EachRunGetsTheCountOfItsDimension) {
     ASSERT_EQ(p.run_count(), 12);
     for (std::int64_t id = 0; id < p.run_count(); ++id) {
         const RunRequest request = p.request(id);
-        const std::int64_t dimension = p.problems[p.cell(id).problem]->dimension();
+        const std::int64_t dimension = p.problems[p.cell(id).problem].problem->dimension();
         EXPECT_EQ(request.budget.max_evaluations, 100 * dimension);
         EXPECT_EQ(request.budget_text, "evaluations=100*dim"); // one budget: one report for all dimensions
     }

@@ -11,6 +11,7 @@
 #include "runner/study/study.hpp"
 #include "runner/study/study_file.hpp"
 #include "runner/study/study_presets.hpp"
+#include "tests/support/prepared_study.hpp"
 
 namespace mhb {
 namespace {
@@ -47,13 +48,13 @@ TEST(StudyDesign, AGridIsEightLabelledVariantsInAFixedOrder) {
     ASSERT_EQ(p.algorithms.size(), 8u);
     std::vector<std::string> labels;
     for (const auto& a : p.algorithms)
-        labels.push_back(a.label);
+        labels.push_back(a.info.label);
     EXPECT_EQ(labels,
               (std::vector<std::string>{"itlbo[T+S+O+]", "itlbo[T+S+O-]", "itlbo[T+S-O+]", "itlbo[T+S-O-]",
                                         "itlbo[T-S+O+]", "itlbo[T-S+O-]", "itlbo[T-S-O+]", "itlbo[T-S-O-]"}));
-    EXPECT_EQ(p.algorithms.front().spec, "itlbo"); // the paper's configuration: every default
-    EXPECT_EQ(p.algorithms.back().spec, "itlbo:obl=off,stepwise=off,tutorial=off");
-    EXPECT_NE(p.algorithms.back().full_spec.find("np=50"), std::string::npos);
+    EXPECT_EQ(p.algorithms.front().info.spec, "itlbo"); // the paper's configuration: every default
+    EXPECT_EQ(p.algorithms.back().info.spec, "itlbo:obl=off,stepwise=off,tutorial=off");
+    EXPECT_NE(p.algorithms.back().info.full_spec.find("np=50"), std::string::npos);
     // A study file keeps each variant with its label, and reads back to the same study.
     const std::string text = study_ini(p.study);
     EXPECT_NE(text.find("algorithms = itlbo:obl=off,label=itlbo[T+S+O-]\n"), std::string::npos) << text;
@@ -63,19 +64,19 @@ TEST(StudyDesign, AGridIsEightLabelledVariantsInAFixedOrder) {
         prepare_study(paper_study({"pso:w={0.4,0.5,0.7}", "de:F={0.5,0.9},CR={0.1,0.9}"}));
     std::vector<std::string> more;
     for (const auto& a : w.algorithms)
-        more.push_back(a.label);
+        more.push_back(a.info.label);
     EXPECT_EQ(more, (std::vector<std::string>{"pso[w=0.4]", "pso[w=0.5]", "pso[w=0.7]", "de[F=0.5,CR=0.1]",
                                               "de[F=0.5,CR=0.9]", "de[F=0.9,CR=0.1]", "de[F=0.9,CR=0.9]"}));
     // Switches that share a first letter are named in full.
     const PreparedStudy o = prepare_study(paper_study({"itlbo:obl={on,off},obl_greedy={on,off}"}));
-    EXPECT_EQ(o.algorithms[1].label, "itlbo[obl+,obl_greedy-]");
+    EXPECT_EQ(o.algorithms[1].info.label, "itlbo[obl+,obl_greedy-]");
 }
 
 TEST(StudyDesign, LabelsNameVariantsAndSameMeaningSpecsAreOneOptimiser) {
     const PreparedStudy p = prepare_study(paper_study({"tlbo:label=TLBO (Rao 2011)", "pso:w=0.7"}));
-    EXPECT_EQ(p.algorithms[0].label, "TLBO (Rao 2011)");
-    EXPECT_EQ(p.algorithms[0].spec, "tlbo");
-    EXPECT_EQ(p.algorithms[1].label, "pso:w=0.7");
+    EXPECT_EQ(p.algorithms[0].info.label, "TLBO (Rao 2011)");
+    EXPECT_EQ(p.algorithms[0].info.spec, "tlbo");
+    EXPECT_EQ(p.algorithms[1].info.label, "pso:w=0.7");
     EXPECT_EQ(error_lines(paper_study({"tlbo", "tlbo:np=50"})),
               (std::vector<std::string>{
                   "algorithm 'tlbo:np=50' is the same optimiser as 'tlbo' (both are 'tlbo')"}));
@@ -98,7 +99,7 @@ TEST(StudyDesign, CommonRandomNumbersMakeItlboWithSwitchesOffTlboInsideAStudy) {
         const std::string suffix = std::string(",r=") + r;
         const PreparedStudy p = prepare_study(paper_study(
             {"itlbo:tutorial=off,stepwise=off,obl=off" + suffix, "tlbo:r=" + std::string(r), "pso"}));
-        const auto a = static_cast<std::int64_t>(p.optimizers.size());
+        const auto a = static_cast<std::int64_t>(p.algorithms.size());
         for (std::int64_t pr = 0; pr < 2; ++pr)
             for (std::int64_t run = 0; run < p.study.runs; ++run) {
                 const RunRecord itlbo = execute_run(p.request((pr * a + 0) * p.study.runs + run));
@@ -130,7 +131,7 @@ TEST(StudyDesign, PerAlgorithmSeedsAreTheOldDerivation) {
     const PreparedStudy p = prepare_study(s);
     const RunRequest tlbo = p.request(0);
     const RunRequest itlbo = p.request(p.study.runs);
-    EXPECT_EQ(tlbo.seed, derive_seed(11, "tlbo", p.problem_specs[0], 0));
+    EXPECT_EQ(tlbo.seed, derive_seed(11, "tlbo", p.problems[0].spec, 0));
     EXPECT_NE(tlbo.seed, itlbo.seed);
     EXPECT_NE(execute_run(tlbo).best_f, execute_run(itlbo).best_f);
     EXPECT_NE(study_ini(p.study).find("seeds = per-algorithm\n"), std::string::npos);
@@ -232,7 +233,7 @@ TEST(StudyDesign, ShippedPresetsAreStudyFilesAndTheAblationIsTheFullFactorial) {
     EXPECT_EQ(p.study.seeds, SeedMode::common);
     const PreparedStudy bbob = prepare_study(find_study_preset("bbob").study);
     EXPECT_EQ(bbob.problems.size(), 24u * 5u * 15u);
-    EXPECT_EQ(bbob.problem_specs.back(), "bbob:dim=20,f=24,instance=15");
+    EXPECT_EQ(bbob.problems.back().spec, "bbob:dim=20,f=24,instance=15");
     for (const char* name : {"fair", "paper", "paper-table4", "centre-bias", "smoke"})
         EXPECT_NO_THROW((void)prepare_study(find_study_preset(name).study)) << name;
 }
@@ -241,19 +242,19 @@ TEST(StudyDesign, ShippedPresetsAreStudyFilesAndTheAblationIsTheFullFactorial) {
 // identification problems, each with a known, non-zero f* for the relative target (1e-6 |f*|).
 TEST(StudyDesign, TheFluxMapAndLadderPresetsMeasureSuccessRelativeToFStar) {
     const PreparedStudy flux = prepare_study(find_study_preset("flux-map").study);
-    EXPECT_EQ(flux.problem_specs, (std::vector<std::string>{"fluxmap:model=pmsyrm"}));
+    EXPECT_EQ(test_support::problem_specs(flux), (std::vector<std::string>{"fluxmap:model=pmsyrm"}));
     EXPECT_EQ(flux.budget_texts, (std::vector<std::string>{"evaluations=20000,relative_target=1e-06",
                                                            "evaluations=200000,relative_target=1e-06"}));
     EXPECT_EQ(flux.algorithms.size(), 19u);
     std::set<std::string> labels;
     for (const auto& a : flux.algorithms)
-        labels.insert(a.label);
+        labels.insert(a.info.label);
     for (const char* label :
          {"itlbo", "itlbo[T+S-O-]", "itlbo[T-S+O-]", "itlbo[T-S-O+]", "tlbo", "bipop-cmaes", "bobyqa",
           "sbplx", "nelder-mead", "crs2-lm", "direct-l", "isres", "esch"})
         EXPECT_EQ(labels.count(label), 1u) << label;
     // A run on the flux map stops once f - f* <= 1e-6 x f* (36.0995588759095 A^2, the shipped one).
-    const double f_star = flux.problems.front()->known_optimum()->f;
+    const double f_star = flux.problems.front().problem->known_optimum()->f;
     EXPECT_NEAR(f_star, 36.0995588759095, 1e-12);
     EXPECT_EQ(flux.request(0).budget.target_error, 1e-6 * f_star);
 
@@ -261,7 +262,7 @@ TEST(StudyDesign, TheFluxMapAndLadderPresetsMeasureSuccessRelativeToFStar) {
     ASSERT_EQ(ladder.problems.size(), 3u);
     EXPECT_EQ(ladder.algorithms.size(), 9u);
     for (const auto& problem : ladder.problems) {
-        const auto optimum = problem->known_optimum();
+        const auto optimum = problem.problem->known_optimum();
         ASSERT_TRUE(optimum.has_value());
         EXPECT_GT(optimum->f, 0.0); // noisy data: the relative target means something
     }

@@ -11,6 +11,7 @@
 #include "runner/study/study.hpp"
 #include "runner/study/study_file.hpp"
 #include "runner/study/study_presets.hpp"
+#include "tests/support/prepared_study.hpp"
 #include "tests/unit/runner/test_problem.hpp"
 
 namespace mhb {
@@ -63,9 +64,10 @@ std::vector<std::string> lines_of(const std::string& text) {
 TEST(Study, ExpandsProblemRangesInPlaceAndNumbersRunsProblemAlgorithmRun) {
     const PreparedStudy p = prepare(small_random_search_study());
     // sphere:dim=1-3 becomes three problems, then the explicit one: 4 problems x 2 algorithms x 3 runs.
-    EXPECT_EQ(p.problem_specs, (std::vector<std::string>{"sphere:dim=1", "sphere:dim=2", "sphere:dim=3",
-                                                         "sphere:bound=5,dim=2"}));
-    EXPECT_EQ(p.algorithm_specs,
+    EXPECT_EQ(
+        test_support::problem_specs(p),
+        (std::vector<std::string>{"sphere:dim=1", "sphere:dim=2", "sphere:dim=3", "sphere:bound=5,dim=2"}));
+    EXPECT_EQ(test_support::algorithm_specs(p),
               (std::vector<std::string>{"random-search:batch=4", "random-search:batch=7"}));
     ASSERT_EQ(p.run_count(), 24);
     std::set<std::tuple<std::string, std::string, std::int64_t>> seen;
@@ -75,11 +77,11 @@ TEST(Study, ExpandsProblemRangesInPlaceAndNumbersRunsProblemAlgorithmRun) {
         // The documented order: problem outermost, then algorithm, then run index.
         const auto pi = static_cast<std::size_t>(id / 6);
         const auto ai = static_cast<std::size_t>((id / 3) % 2);
-        EXPECT_EQ(r.problem_spec, p.problem_specs[pi]);
-        EXPECT_EQ(r.algorithm_spec, p.algorithm_specs[ai]);
+        EXPECT_EQ(r.problem_spec, p.problems[pi].spec);
+        EXPECT_EQ(r.algorithm_spec, p.algorithms[ai].info.spec);
         EXPECT_EQ(r.run_index, id % 3);
-        EXPECT_EQ(r.problem, p.problems[pi].get()); // components built once, shared by their runs
-        EXPECT_EQ(r.optimizer, p.optimizers[ai].get());
+        EXPECT_EQ(r.problem, p.problems[pi].problem.get()); // components built once, shared by their runs
+        EXPECT_EQ(r.optimizer, p.algorithms[ai].optimizer.get());
         // Common random numbers: the seed depends on the problem and the run index only.
         EXPECT_EQ(r.seed, derive_seed(42, r.problem_spec, static_cast<std::uint64_t>(r.run_index)));
         EXPECT_EQ(r.budget_text, "iterations=5");
@@ -87,7 +89,7 @@ TEST(Study, ExpandsProblemRangesInPlaceAndNumbersRunsProblemAlgorithmRun) {
         seen.insert({r.problem_spec, r.algorithm_spec, r.run_index});
     }
     EXPECT_EQ(seen.size(), 24u); // every (problem, algorithm, run) exactly once
-    EXPECT_EQ(p.problems[2]->dimension(), 3);
+    EXPECT_EQ(p.problems[2].problem->dimension(), 3);
     EXPECT_THROW((void)p.request(24), std::out_of_range);
     EXPECT_THROW((void)p.request(-1), std::out_of_range);
 }
@@ -96,7 +98,7 @@ TEST(Study, SpecsAreCanonicalSoParameterOrderDoesNotMatter) {
     Study a = small_random_search_study();
     Study b = small_random_search_study();
     b.problems = {"sphere:dim=1-3", "sphere:dim=2,bound=5"};
-    EXPECT_EQ(prepare(a).problem_specs, prepare(b).problem_specs);
+    EXPECT_EQ(test_support::problem_specs(prepare(a)), test_support::problem_specs(prepare(b)));
     EXPECT_EQ(study_ini(prepare(a).study), study_ini(prepare(b).study));
 }
 
