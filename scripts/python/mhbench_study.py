@@ -29,6 +29,7 @@ imported from /usr/bin/python3).
 
 import dataclasses
 import pathlib
+import sys
 
 import pandas as pd
 
@@ -69,7 +70,7 @@ class StudyError(Exception):
 class Report:
     """One budget's report: the folder mhbench report wrote for it.
 
-    directory  the folder (DIR/report, or DIR/report/<budget slug> when the study has budgets)
+    directory  the folder (DIR/report, or DIR/report/<budget slug> when the study has several)
     budget     the budget its runs had ("" when the report does not say: budget.txt missing)
     tables     statistics table id -> DataFrame (<id>.csv: the columns are the table's header,
                a cell that shows two numbers, "median (IQR) marker", stays text)
@@ -101,7 +102,8 @@ class Study:
     def report(self, budget=None):
         """The report of `budget`, or the only one when budget is None."""
         if not self.reports:
-            raise StudyError(f"{self.directory / 'report'}: no report (run `mhbench report {self.directory}`)")
+            raise StudyError(f"{self.directory / 'report'}: no report "
+                             f"(`mhbench report {self.directory}` writes it)")
         if budget is None:
             if len(self.reports) > 1:
                 raise StudyError(f"{self.directory / 'report'}: {len(self.reports)} budgets, name one of "
@@ -140,24 +142,22 @@ def _first_line(error):
     return str(error).strip().splitlines()[0] if str(error).strip() else type(error).__name__
 
 
-def _bad_cell(path, frame, column, what):
-    """The StudyError of the first cell of `column` that is not `what` (e.g. 'a number')."""
-    def fails(text):
-        try:
-            what[1](text)
-            return False
-        except ValueError:
-            return True
+def _bad_cell(path, frame, column, description, valid):
+    """The StudyError of the first cell of `column` that `valid` refuses, as not `description`."""
     for row, text in enumerate(frame[column]):
-        if fails(text):
-            # Line 1 is the header.
-            return StudyError(f"{path}, line {row + 2}, column '{column}': {text!r} is not {what[0]}")
-    return StudyError(f"{path}, column '{column}': not {what[0]}")
+        if not valid(text):
+            # Line 1 is the header; mhbench writes one row per line.
+            return StudyError(f"{path}, line {row + 2}, column '{column}': {text!r} is not {description}")
+    return StudyError(f"{path}, column '{column}': not {description}")
 
 
-def _float_or_nan(text):
-    """A cell as a float: '' is NaN, anything else must be a number."""
-    return float(text) if text != "" else float("nan")
+def _parses(convert, text):
+    """Whether convert(text) succeeds (float or int)."""
+    try:
+        convert(text)
+        return True
+    except (ValueError, OverflowError):
+        return False
 
 
 def _numbers(frame, path, column):
@@ -166,7 +166,7 @@ def _numbers(frame, path, column):
     try:
         return texts.where(texts != "", "nan").astype("float64")
     except ValueError:
-        raise _bad_cell(path, frame, column, ("a number", _float_or_nan)) from None
+        raise _bad_cell(path, frame, column, "a number", lambda t: t == "" or _parses(float, t)) from None
 
 
 def _integers(frame, path, column):
@@ -177,7 +177,7 @@ def _integers(frame, path, column):
             return pd.array([int(t) if t != "" else None for t in texts], dtype="Int64")
         return texts.astype("int64")
     except (ValueError, OverflowError):
-        raise _bad_cell(path, frame, column, ("an integer", lambda t: t == "" or int(t))) from None
+        raise _bad_cell(path, frame, column, "an integer", lambda t: t == "" or _parses(int, t)) from None
 
 
 def _infer(frame, path, text_columns=_TEXT_COLUMNS):
@@ -285,7 +285,8 @@ def load_runs(study_dir):
         raw.insert(raw.columns.get_loc("problem") + 1, "budget", "")
     bad = raw.index[~raw["status"].isin(["ok", "failed"])]
     if len(bad):
-        raise StudyError(f"{path}, line {bad[0] + 2}, column 'status': {raw['status'][bad[0]]!r} is not ok or failed")
+        raise StudyError(f"{path}, line {bad[0] + 2}, column 'status': {raw['status'][bad[0]]!r} "
+                         "is not ok or failed")
     columns = list(raw.columns)
     first, end = columns.index("best_x") + 1, columns.index("message")
     parameters = columns[first:end]  # P, P_true, P_opt, P_err_pct per named parameter
@@ -317,16 +318,18 @@ def load_runs(study_dir):
     if later:
         runs = pd.concat([runs, _infer(raw[later], path)], axis=1)
     if runs["run_id"].duplicated().any():
-        raise StudyError(f"{path}: run_id {runs['run_id'][runs['run_id'].duplicated()].iloc[0]} is listed twice")
+        twice = runs["run_id"][runs["run_id"].duplicated()].iloc[0]
+        raise StudyError(f"{path}: run_id {twice} is listed twice")
     return runs
 
 
 def _unsigned(frame, path, column):
     """Column `column` as uint64 (a seed may exceed int64)."""
-    try:
-        return frame[column].map(int).astype("uint64")
-    except (ValueError, OverflowError):
-        raise _bad_cell(path, frame, column, ("an unsigned integer", lambda t: int(t) >= 0 or int("x"))) from None
+    def valid(text):
+        return _parses(int, text) and 0 <= int(text) < 2**64
+    if not frame[column].map(valid).all():
+        raise _bad_cell(path, frame, column, "an unsigned 64-bit integer", valid)
+    return pd.Series([int(t) for t in frame[column]], index=frame.index, dtype="uint64")
 
 
 def _with_run_key(frame, runs, path):
@@ -527,12 +530,12 @@ def load_study(study_dir, report_dir=None):
 def _main(argv):
     """`mhbench_study.py DIR`: a summary of what the study holds, to check it reads."""
     if len(argv) != 2:
-        print("usage: mhbench_study.py STUDY_DIR")
+        print("usage: mhbench_study.py STUDY_DIR", file=sys.stderr)
         return 2
     try:
         study = load_study(argv[1])
     except StudyError as e:
-        print(f"mhbench_study: {e}")
+        print(f"mhbench_study: {e}", file=sys.stderr)
         return 1
     print(f"{study.directory}: {len(study.runs)} runs, {study.runs['label'].nunique()} algorithms, "
           f"{study.runs['problem'].nunique()} problems, {study.runs['budget'].nunique()} budgets; "
@@ -544,5 +547,4 @@ def _main(argv):
 
 
 if __name__ == "__main__":
-    import sys
     sys.exit(_main(sys.argv))
