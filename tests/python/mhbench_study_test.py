@@ -63,6 +63,8 @@ class StudyModuleTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.scratch = pathlib.Path(tempfile.mkdtemp(prefix="mhb_pandas_"))
+        # Removed even when what follows fails (tearDownClass would not run then).
+        cls.addClassCleanup(shutil.rmtree, cls.scratch, ignore_errors=True)
         cls.dir = cls.scratch / "study"
         done = subprocess.run([MHBENCH, "run", *STUDY, "--out", str(cls.dir)], capture_output=True, text=True)
         if done.returncode != 0:
@@ -70,10 +72,6 @@ class StudyModuleTest(unittest.TestCase):
         cls.study = mhbench_study.load_study(cls.dir)
         cls.csv_runs = read_rows(cls.dir / "runs.csv")
         cls.labels = {row["algorithm"]: row["label"] for row in read_rows(cls.dir / "algorithms.csv")}
-
-    @classmethod
-    def tearDownClass(cls):
-        shutil.rmtree(cls.scratch, ignore_errors=True)
 
     def copy_study(self, name):
         """A copy of the study's files (not its report) to break."""
