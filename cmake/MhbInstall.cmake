@@ -5,6 +5,7 @@
 #   bin/mhbench                    the executable the modules are loaded into
 #   share/mhbench/scripts/         the figure scripts it runs (runner/execution/companion_files.hpp)
 #   share/mhbench/studies/         the preset study files, as text to copy (they are compiled in)
+#   share/mhbench/python/          mhbench_study.py, a study directory as pandas DataFrames
 #   share/mhbench/data/fluxmap/    the licence and provenance of the flux map compiled in
 # mhbench::mhbench is headers only: a plug-in's calls into mhbench (Objective::evaluate, Rng,
 # parameters) are resolved from the executable when it loads the module, so that the one copy of
@@ -58,6 +59,9 @@ install(FILES ${PROJECT_BINARY_DIR}/mhbenchConfig.cmake ${PROJECT_BINARY_DIR}/mh
 foreach(script IN LISTS MHB_COMPANION_SCRIPTS)
     install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/${script} DESTINATION ${CMAKE_INSTALL_DATADIR}/mhbench/scripts)
 endforeach()
+# The Python module that loads a study into pandas (README, "Your results in Python"): not run by
+# mhbench, imported by the user's scripts from here (sys.path.insert or PYTHONPATH).
+install(FILES ${PROJECT_SOURCE_DIR}/scripts/python/mhbench_study.py DESTINATION ${CMAKE_INSTALL_DATADIR}/mhbench/python)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scripts/studies/ DESTINATION ${CMAKE_INSTALL_DATADIR}/mhbench/studies
     FILES_MATCHING PATTERN "*.ini")
 install(FILES ${PROJECT_SOURCE_DIR}/problems/fluxmap/data/LICENSE-motulator

@@ -26,6 +26,7 @@ packages=(
     libbenchmark-dev                     # Google Benchmark
     python3-matplotlib                   # figures (Debian's /usr/bin/python3)
     python3-munkres                      # what matplotlib's font tools need instead of SciPy (200 MB)
+    python3-pandas                       # scripts/python/mhbench_study.py: a study as DataFrames
 )
 optional_fuzz=(clang libclang-rt-dev)    # scripts/fuzz.sh: clang with libFuzzer and its sanitizers
 optional_mpi=(libopenmpi-dev openmpi-bin) # scripts/mpi.sh: Open MPI for `mpirun -np N mhbench run`
