@@ -55,7 +55,7 @@ public:
         : s_(settings), objective_(objective), rng_(rng), h_(static_cast<std::size_t>(settings.memory)),
           m_cr_(h_, 0.5), m_f_(h_, 0.5), cr_terminal_(h_, false) {
         if (auto why = lshade_refusal(s_, objective.dimension()))
-            throw std::invalid_argument(std::move(*why));
+            throw std::invalid_argument(*why);
         n_init_ = lshade_initial_population(s_, objective.dimension());
         n_min_ = static_cast<std::size_t>(s_.n_min);
         max_nfe_ = shade::lpsr_max_evaluations(objective.budget(), static_cast<double>(n_init_),

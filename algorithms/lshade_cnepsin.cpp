@@ -288,7 +288,7 @@ public:
 
     void run(Objective& objective, Rng& rng) const override {
         if (auto why = refusal(objective.dimension()))
-            throw std::invalid_argument(std::move(*why));
+            throw std::invalid_argument(*why);
         const auto n_init = initial_population(objective.dimension());
         const auto n_min = static_cast<std::size_t>(s_.n_min);
         Run r{s_, objective, rng, n_init, n_min};

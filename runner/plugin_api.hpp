@@ -94,6 +94,6 @@ inline std::string plugin_build_settings() {
 #define MHBENCH_PLUGIN(NAME, REGISTER)                                                                       \
     extern "C" __attribute__((visibility("default"))) const mhb::PluginInfo* mhbench_plugin() {              \
         static const std::string build = mhb::plugin_build_settings();                                       \
-        static const mhb::PluginInfo info{mhb::plugin_abi_version, NAME, build.c_str(), &REGISTER};          \
+        static const mhb::PluginInfo info{mhb::plugin_abi_version, NAME, build.c_str(), &(REGISTER)};        \
         return &info;                                                                                        \
     }

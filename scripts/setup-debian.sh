@@ -2,7 +2,8 @@
 # Installs the Debian packages mhbench needs, if any are missing (as root, or through sudo).
 # Every dependency comes from Debian: nothing is downloaded at build time.
 # Optional groups are named as arguments: `setup-debian.sh fuzz` adds clang and libFuzzer,
-# `setup-debian.sh mpi` Open MPI (the MHB_WITH_MPI build, scripts/mpi.sh), `setup-debian.sh ccache`
+# `setup-debian.sh mpi` Open MPI (the MHB_WITH_MPI build, scripts/mpi.sh), `setup-debian.sh tidy`
+# clang-tidy and Ninja (scripts/clang-tidy.sh), `setup-debian.sh ccache`
 # the compiler cache CI shares between its release and MPI builds, `setup-debian.sh browser` Chromium
 # (report/index.html checked in a headless browser: scripts/browser-check.sh), `setup-debian.sh tex`
 # pdflatex with latex-base and latex-recommended, and the journal classes IEEEtran and elsarticle
@@ -30,6 +31,7 @@ packages=(
 )
 optional_fuzz=(clang libclang-rt-dev)    # scripts/fuzz.sh: clang with libFuzzer and its sanitizers
 optional_mpi=(libopenmpi-dev openmpi-bin) # scripts/mpi.sh: Open MPI for `mpirun -np N mhbench run`
+optional_tidy=(clang-tidy ninja-build)   # scripts/clang-tidy.sh: clang-tidy, and Ninja for the headers it reads
 optional_ccache=(ccache)                 # .ci/run: the MPI build reuses the release build's objects
 optional_browser=(chromium)              # scripts/browser-check.sh: the HTML report in headless Chromium
 optional_tex=(texlive-latex-base texlive-latex-recommended lmodern # scripts/latex-check.sh: pdflatex,
@@ -41,13 +43,14 @@ for group in "$@"; do
     case "$group" in
     fuzz) packages+=("${optional_fuzz[@]}") ;;
     mpi) packages+=("${optional_mpi[@]}") ;;
+    tidy) packages+=("${optional_tidy[@]}") ;;
     ccache) packages+=("${optional_ccache[@]}") ;;
     browser) packages+=("${optional_browser[@]}") ;;
     tex) packages+=("${optional_tex[@]}") ;;
     octave) packages+=("${optional_octave[@]}") ;;
     pagmo) packages+=("${optional_pagmo[@]}") ;;
     *)
-        echo "mhbench set-up: unknown optional group '$group' (known: fuzz, mpi, ccache, browser, tex, octave, pagmo)" >&2
+        echo "mhbench set-up: unknown optional group '$group' (known: fuzz, mpi, tidy, ccache, browser, tex, octave, pagmo)" >&2
         exit 2
         ;;
     esac

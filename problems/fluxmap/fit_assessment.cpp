@@ -81,7 +81,7 @@ FreeFit free_fit(const CurrentMap& map, const Box& box, const Eigen::VectorXd& t
     const double infinity = std::numeric_limits<double>::infinity();
     const Eigen::VectorXd inverse_s2 =
         s.unaryExpr([&](double v) { return v > s[0] * 1e-15 ? 1.0 / (v * v) : infinity; });
-    const Eigen::MatrixXd v = svd.matrixV();
+    const Eigen::MatrixXd& v = svd.matrixV();
     Eigen::MatrixXd unit_covariance = Eigen::MatrixXd::Zero(p, p);
     for (Eigen::Index k = 0; k < p; ++k)
         if (std::isfinite(inverse_s2[k]))

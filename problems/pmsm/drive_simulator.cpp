@@ -307,7 +307,7 @@ Dataset simulate_dataset(const SimulatorConfig& config) {
     const Dataset all = run_periods(drive, transient ? end_off + n : end_on);
 
     Dataset out;
-    out.reserve(static_cast<std::size_t>(2 * n));
+    out.reserve(2 * static_cast<std::size_t>(n));
     const std::vector<std::pair<int, int>> stretches =
         transient ? std::vector<std::pair<int, int>>{{end_off - n, end_off + n}}
                   : std::vector<std::pair<int, int>>{{end_off - n, end_off}, {end_on - n, end_on}};

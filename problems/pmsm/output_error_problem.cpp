@@ -22,7 +22,7 @@ void require_model_size(const Eigen::VectorXd& x, Eigen::Index n, const std::str
 
 OutputErrorProblem::OutputErrorProblem(OutputErrorModel model, Box bounds,
                                        std::optional<Eigen::VectorXd> truth,
-                                       std::vector<Eigen::VectorXd> reference_starts)
+                                       const std::vector<Eigen::VectorXd>& reference_starts)
     : model_(std::move(model)), box_(std::move(bounds)), truth_(std::move(truth)) {
     box_.validate("pmsm");
     const Eigen::Index n = model_.parameters();

@@ -27,7 +27,7 @@ public:
     // clamped into the box before refinement. With no start (or none that can be simulated)
     // there is no known optimum. Throws std::invalid_argument on a bad box or a wrong size.
     OutputErrorProblem(OutputErrorModel model, Box bounds, std::optional<Eigen::VectorXd> truth,
-                       std::vector<Eigen::VectorXd> reference_starts);
+                       const std::vector<Eigen::VectorXd>& reference_starts);
 
     std::string name() const override { return "pmsm"; }
     Eigen::Index dimension() const override { return model_.parameters(); }

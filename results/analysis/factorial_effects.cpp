@@ -294,7 +294,7 @@ EffectAnalysis analyse_factorial_blocks(const std::vector<std::vector<double>>& 
     for (std::size_t i = 0; i < k; ++i)
         for (std::size_t j = i + 1; j < k; ++j)
             contrasts.push_back({i, j});
-    const double half = static_cast<double>(variants / 2);
+    const double half = static_cast<double>(variants) / 2.0; // variants = 2^k is even
     for (const auto& contrast : contrasts) {
         EffectEstimate e;
         e.factors = contrast;

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <sys/stat.h>
@@ -108,9 +109,9 @@ double CsvTable::number(std::size_t row, std::size_t column) const {
     if (text == "nan")
         return std::nan("");
     if (text == "inf")
-        return INFINITY;
+        return std::numeric_limits<double>::infinity();
     if (text == "-inf")
-        return -INFINITY;
+        return -std::numeric_limits<double>::infinity();
     double value = 0;
     const char* end = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(text.data(), end, value);

@@ -49,12 +49,12 @@ bool holds_other_files(const fs::path& dir) {
 
 } // namespace
 
-StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string context_text,
+StudyWriter::StudyWriter(fs::path dir, std::string study_text, const std::string& context_text,
                          std::vector<std::string> parameter_columns, bool overwrite,
                          const std::vector<AlgorithmInfo>& algorithms, std::optional<StudyRunKeys> keys)
-    : dir_(std::move(dir)), study_text_(study_text), parameter_columns_(std::move(parameter_columns)),
-      keys_(std::move(keys)),
-      unkeyed_suffix_(" of study " + std::to_string(std::hash<std::string>{}(study_text))) {
+    : dir_(std::move(dir)), study_text_(std::move(study_text)),
+      parameter_columns_(std::move(parameter_columns)), keys_(std::move(keys)),
+      unkeyed_suffix_(" of study " + std::to_string(std::hash<std::string>{}(study_text_))) {
     std::error_code ec;
     if (fs::is_directory(dir_, ec) && holds_other_files(dir_) && !is_study_directory(dir_))
         throw std::runtime_error(dir_.string() + ": is not empty and is not a mhbench study (it has no " +
@@ -81,14 +81,14 @@ StudyWriter::StudyWriter(fs::path dir, std::string study_text, std::string conte
     // A changed study is unfinished until finish() writes its files again; so is one that lost its
     // marker, which alone vouched for the rendered files.
     const bool same_study =
-        fs::exists(dir_ / StudyFiles::study) && read_whole_file(dir_ / StudyFiles::study) == study_text;
+        fs::exists(dir_ / StudyFiles::study) && read_whole_file(dir_ / StudyFiles::study) == study_text_;
     const bool has_marker = fs::exists(dir_ / StudyFiles::marker);
     if (!same_study || !has_marker)
         fs::remove(dir_ / StudyFiles::runs, ec);
     // A finished study's marker names its study.ini: kept while that study stays.
     if (!same_study || !has_marker)
-        write_file_atomically(dir_ / StudyFiles::marker, study_marker(study_text));
-    write_file_atomically(dir_ / StudyFiles::study, study_text);
+        write_file_atomically(dir_ / StudyFiles::marker, study_marker(study_text_));
+    write_file_atomically(dir_ / StudyFiles::study, study_text_);
     write_file_atomically(dir_ / StudyFiles::context, context_text);
     if (algorithms.empty()) {
         fs::remove(dir_ / StudyFiles::algorithms, ec);

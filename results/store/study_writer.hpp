@@ -62,7 +62,7 @@ public:
     // `algorithms` (in study order) becomes algorithms.csv; none: no such file.
     // Without `keys`, a run's identity is its run_id within this study text (tests, and tools that
     // write records directly): such a study resumes, but does not share runs with another.
-    StudyWriter(std::filesystem::path dir, std::string study_text, std::string context_text,
+    StudyWriter(std::filesystem::path dir, std::string study_text, const std::string& context_text,
                 std::vector<std::string> parameter_columns, bool overwrite,
                 const std::vector<AlgorithmInfo>& algorithms = {}, std::optional<StudyRunKeys> keys = {});
     ~StudyWriter();

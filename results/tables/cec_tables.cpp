@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -149,7 +150,7 @@ void add_rank_rows(Table& t, const StudyIndex& index, const CecProtocol& protoco
     double best_rank = INFINITY;
     for (const double r : totals.rank_sum)
         best_rank = std::min(best_rank, r);
-    double best_u = -INFINITY;
+    double best_u = -std::numeric_limits<double>::infinity();
     for (const double u : totals.u_score)
         best_u = std::max(best_u, u);
     for (std::size_t j = 0; j < algorithms.size(); ++j) {

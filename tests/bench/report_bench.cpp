@@ -33,7 +33,7 @@ fs::path paper_sized_study() {
             r.x_opt = r.true_parameters;
             r.f_opt = 3.9;
             r.iterations = 150;
-            r.evaluations = 50 * 151;
+            r.evaluations = std::int64_t{50} * 151;
             for (std::int64_t it = 0; it <= 150; ++it) {
                 const double f = 3.9 + (1.0 + 0.1 * a + 0.01 * i) * 100.0 / static_cast<double>(it + 1);
                 std::vector<double> x = r.true_parameters;

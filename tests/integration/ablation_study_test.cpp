@@ -49,7 +49,7 @@ TEST(SlowAblationStudy, EffectTablesPerBudgetAgreeWithTheRunRecordsAndThePlotsEx
     ASSERT_EQ(budgets.rows.size(), 2u);
     std::size_t checked = 0;
     for (const auto& budget_row : budgets.rows) {
-        const std::string budget = budget_row[budgets.column("budget")];
+        const std::string& budget = budget_row[budgets.column("budget")];
         const fs::path report = dir / "report" / budget_row[budgets.column("directory")];
         const mhb::CsvTable effects = mhb::read_csv(report / "effects.csv");
         // Per (problem, run index): the responses of the 8 variants, which share one seed.

@@ -35,7 +35,7 @@ std::string problems_in_log(const fs::path& log) {
     std::istringstream in(read_text(log));
     std::string out;
     for (std::string line; std::getline(in, line);)
-        if (line.rfind("!", 0) == 0 || line.find("Overfull \\hbox") != std::string::npos ||
+        if (line.rfind('!', 0) == 0 || line.find("Overfull \\hbox") != std::string::npos ||
             line.find("Float too large") != std::string::npos)
             out += line + "\n";
     return out;

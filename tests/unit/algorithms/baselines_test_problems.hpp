@@ -92,7 +92,7 @@ public:
         box_.upper << 0.5, 0.01, 0.01, 0.1;
         const double rs = 0.33, ld = 3.24e-3, lq = 3.24e-3, psi = 0.0776;
         const double omega = 2500.0 / 60.0 * 2.0 * std::numbers::pi * 2.0;
-        const int samples = 300;
+        const Eigen::Index samples = 300;
         Rng rng(seed);
         a_.resize(4 * samples, 4);
         b_.resize(4 * samples);

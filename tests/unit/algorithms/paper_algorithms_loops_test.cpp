@@ -270,7 +270,7 @@ TEST(PaperAlgorithmLoops, MutationEvaluatesTheOppositeOfEachLearner) {
             run(std::string("itlbo:np=6,tutorial=off,stepwise=off,p=1,obl_greedy=") +
                     (greedy ? "on" : "off") + ",obl_bounds=" + (population ? "population" : "static"),
                 rec, 9, iterations(4));
-            ASSERT_EQ(rec.points.size(), np + 4 * 3 * np);
+            ASSERT_EQ(rec.points.size(), np + np * 4 * 3);
             TrackedClass c(rec, np);
             auto& state = c.x;
             auto& f = c.f;

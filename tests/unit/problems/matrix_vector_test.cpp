@@ -1,7 +1,8 @@
 // multiply_square: the AVX2 kernel equals Eigen's matrix-vector product bit for bit, at every size
 // the test functions use and beyond, on inputs with zeros of both signs and at any alignment, so
 // that records do not depend on the processor a run had.
-#include <cstring>
+#include <bit>
+#include <cstdint>
 #include <gtest/gtest.h>
 #include <vector>
 
@@ -14,7 +15,7 @@ namespace {
 // 0 when the two vectors are equal bit for bit (so +0 and -0 differ), else the first index + 1.
 std::size_t first_bit_difference(const double* a, const double* b, std::size_t n) {
     for (std::size_t i = 0; i < n; ++i)
-        if (std::memcmp(a + i, b + i, sizeof(double)) != 0)
+        if (std::bit_cast<std::uint64_t>(a[i]) != std::bit_cast<std::uint64_t>(b[i]))
             return i + 1;
     return 0;
 }

@@ -2,8 +2,9 @@
 // repairs, counts, best, traces and target, the same exception at the same index, no evaluation
 // past the budget, and the same result whatever the number of threads.
 #include <atomic>
+#include <bit>
 #include <chrono>
-#include <cstring>
+#include <cstdint>
 #include <functional>
 #include <gtest/gtest.h>
 #include <limits>
@@ -68,7 +69,7 @@ struct Observed {
 };
 
 bool same_bits(double a, double b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
 void expect_identical(const Observed& a, const Observed& b) {

@@ -180,7 +180,8 @@ TEST(VectorMath, AnElementsValueDoesNotDependOnItsNeighbours) {
                                                x.begin() + static_cast<std::ptrdiff_t>(start + length));
                 const std::vector<double> y = run_kernel(f, part);
                 for (std::size_t i = 0; i < length; ++i)
-                    ASSERT_EQ(std::memcmp(&y[i], &whole[start + i], sizeof(double)), 0)
+                    ASSERT_EQ(std::bit_cast<std::uint64_t>(y[i]),
+                              std::bit_cast<std::uint64_t>(whole[start + i]))
                         << (f == Function::exp ? "exp" : "log") << " of " << part[i] << " at " << start << "+"
                         << i;
             }

@@ -160,7 +160,7 @@ TEST(StoreIntegrity, StoresOfTheFormerBlockFormatStillLoad) {
     fs::copy(reference, dir);
     // Format 3: the same blocks without the checksum trailer (tag and CRC, 16 bytes).
     const std::string checksummed = bytes_of(dir / "store.bin");
-    write_bytes(dir / "store.bin", rewrite_blocks(checksummed, [](std::size_t, std::string payload) {
+    write_bytes(dir / "store.bin", rewrite_blocks(checksummed, [](std::size_t, const std::string& payload) {
                     EXPECT_EQ(payload.substr(payload.size() - 16, 8), "MHBCRC4\n");
                     return payload.substr(0, payload.size() - 16);
                 }));
@@ -175,7 +175,7 @@ TEST(StoreIntegrity, StoresOfTheFormerBlockFormatStillLoad) {
     expect_same_files(dir, reference);
     // A format-3 record cut short inside (its framing whole) does not decode: computed again.
     write_bytes(dir / "store.bin",
-                rewrite_blocks(bytes_of(dir / "store.bin"), [](std::size_t block, std::string p) {
+                rewrite_blocks(bytes_of(dir / "store.bin"), [](std::size_t block, const std::string& p) {
                     return block == 2 ? p.substr(0, p.size() - 40) : p;
                 }));
     StudyWriter w = open_study(dir, 3);

@@ -119,8 +119,10 @@ TEST(Store, ResumesAnInterruptedStudyKeepingFinishedRunsOnly) {
         w.append(make_pmsm_record(0), 0.1);
         w.append(make_pmsm_record(1), 0.1);
         // No finish(): the process is "killed" here. Simulate a half-written third block.
+        // A char array, not a C string: the zeros of the length are written too.
+        const char half_block[] = "MHBRUN3\n\x40\0\0\0\0\0\0\0abc";
         std::ofstream(dir / "store.bin", std::ios::binary | std::ios::app)
-            << "MHBRUN3\n\x40\0\0\0\0\0\0\0abc";
+            .write(half_block, sizeof half_block - 1);
     }
     EXPECT_FALSE(fs::exists(dir / "runs.csv"));
     EXPECT_THROW(load_study(dir), std::runtime_error); // unfinished: not a study to report on

@@ -38,7 +38,8 @@ PreparedStudy make_study() {
     return prepare_study(s);
 }
 
-RunnerOutcome run_with_options_into(const fs::path& dir, const PreparedStudy& study, RunnerOptions options) {
+RunnerOutcome run_with_options_into(const fs::path& dir, const PreparedStudy& study,
+                                    const RunnerOptions& options) {
     StudyWriter writer(dir, study_ini(study.study), "threads = test\n", study.parameter_columns, false);
     return run_study(study, writer, options);
 }

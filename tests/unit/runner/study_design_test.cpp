@@ -198,15 +198,16 @@ TEST(StudyFileDesign, EveryErrorOfAFileIsReportedWithItsLine) {
                      "algorithms = pso:w=1.5 tlbo:np=1\n"
                      "problems = sphere:dim={2,2}\n",
                      "bad.ini", s, errors);
+    const std::string known_keys =
+        "algorithms, algorithm, problems, problem, runs, seed, seeds, iterations, "
+        "evaluations, budget, budgets, target, relative-target, protocol, plugins, "
+        "plugin";
     EXPECT_EQ(errors,
               (std::vector<std::string>{
                   "bad.ini:1: runs = 0x10 is not an integer",
                   "bad.ini:2: sections ('[study]') are not used in study files",
                   "bad.ini:3: 'just words' is not key = value",
-                  "bad.ini:4: unknown key 'colour'; known: algorithms, algorithm, problems, problem, runs, "
-                  "seed, seeds, iterations, evaluations, budget, budgets, target, relative-target, protocol, "
-                  "plugins, "
-                  "plugin",
+                  "bad.ini:4: unknown key 'colour'; known: " + known_keys,
                   "bad.ini:5: unknown key 'out' (it is not part of a study: give --out on the command line)",
                   "bad.ini:6: seeds = sometimes is not one of {common, per-algorithm}",
                   "bad.ini:7: iterations = 1e300 is too large (at most 1000000000000000)",
