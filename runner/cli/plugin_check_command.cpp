@@ -1,5 +1,6 @@
 // `mhbench plugin-check --algorithm SPEC | --problem SPEC`: the checks of runner/plugins/plugin_check.hpp
 // on a user's optimiser or problem (or a built-in one), one line each, exit 1 when any fails.
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <cstdio>
 #include <iostream>
@@ -20,14 +21,20 @@ namespace {
 constexpr const char* default_problem = "rastrigin:dim=10";
 constexpr const char* default_algorithm = "random-search";
 
-bool print_results(const std::string& heading, const std::vector<CheckResult>& results) {
+// Each check's line under `heading`; with `quiet`, the failed ones only (and the heading when one
+// failed). Returns whether none failed.
+bool print_results(const std::string& heading, const std::vector<CheckResult>& results, bool quiet) {
+    const bool failed = std::any_of(results.begin(), results.end(),
+                                    [](const CheckResult& r) { return r.verdict == CheckVerdict::fail; });
+    if (quiet && !failed)
+        return true;
     std::cout << heading << '\n';
-    bool failed = false;
     for (const CheckResult& r : results) {
+        if (quiet && r.verdict != CheckVerdict::fail)
+            continue;
         char name[32];
         std::snprintf(name, sizeof name, "%-13s", r.name.c_str());
         std::cout << "  " << to_string(r.verdict) << "  " << name << r.detail << '\n';
-        failed = failed || r.verdict == CheckVerdict::fail;
     }
     return !failed;
 }
@@ -58,7 +65,7 @@ int run_plugin_check_command(const std::vector<std::string>& args) {
         "points", po::value<std::string>()->default_value("2000"), "random points a problem is evaluated at")(
         "plugin", po::value<std::vector<std::string>>()->composing(),
         "load this plug-in module first, so that --algorithm and --problem may name its components "
-        "(repeatable)");
+        "(repeatable)")("quiet,q", "print the failed checks and the verdict only");
     po::variables_map vm;
     if (!parse_command_line(args, options, vm, [&] { std::cout << options << '\n'; }))
         return exit_ok;
@@ -83,15 +90,18 @@ int run_plugin_check_command(const std::vector<std::string>& args) {
     const auto problem = problems.create(problem_spec);
     const auto optimizer = algorithms.create(algorithm_spec);
 
+    const bool quiet = vm.count("quiet") != 0;
     bool passed = true;
     if (vm.count("problem") != 0)
-        passed = print_results("problem " + problem_spec.canonical() + ":", check_problem(*problem, check)) &&
+        passed = print_results("problem " + problem_spec.canonical() + ":", check_problem(*problem, check),
+                               quiet) &&
                  passed;
     passed = print_results(algorithm_spec.canonical() + " on " + problem_spec.canonical() + " (" +
                                std::to_string(check.runs) + " runs of " + std::to_string(check.evaluations) +
                                " evaluations):",
                            check_optimizer(*optimizer, algorithm_spec.canonical(), *problem,
-                                           problem_spec.canonical(), check)) &&
+                                           problem_spec.canonical(), check),
+                           quiet) &&
              passed;
     std::cout << (passed ? "verdict: pass\n" : "verdict: FAIL\n");
     return passed ? exit_ok : exit_failure;

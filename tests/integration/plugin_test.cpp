@@ -89,6 +89,10 @@ TEST(PluginCli, PluginCheckPassesTheExamplesOptimizerAndProblem) {
          {"pass  optimum      f(x*) = f* = 0", "pass  budget       every run made exactly 500",
           "pass  same seed", "pass  threads", "verdict: pass"})
         EXPECT_NE(r.out.find(line), std::string::npos) << line << '\n' << r.out;
+    const auto quiet = run_mhbench("plugin-check --plugin " + shell_quoted(plugin) +
+                                   " --algorithm one-plus-one --problem booth --evaluations 500 --runs 2 -q");
+    ASSERT_EQ(quiet.exit_code, 0) << quiet.out << quiet.err;
+    EXPECT_EQ(quiet.out, "verdict: pass\n"); // -q: the failed checks and the verdict only
 }
 
 TEST(PluginCli, EachUnusableModuleIsRefusedInOneLine) {
