@@ -20,7 +20,7 @@ bool writes_protocol_files(const std::vector<const SuiteProtocol*>& protocols) {
                        [](const SuiteProtocol* p) { return !p->files_folder().empty(); });
 }
 
-bool write_protocol_files(const std::vector<const SuiteProtocol*>& protocols, const StudyIndex& index,
+void write_protocol_files(const std::vector<const SuiteProtocol*>& protocols, const StudyIndex& index,
                           const std::filesystem::path& dir, std::ostream& console) {
     const auto in_force_folder = [&](std::string_view folder) {
         return std::any_of(protocols.begin(), protocols.end(),
@@ -29,13 +29,9 @@ bool write_protocol_files(const std::vector<const SuiteProtocol*>& protocols, co
     for (const SuiteProtocol* other : all_protocols())
         if (!other->files_folder().empty() && !in_force_folder(other->files_folder()))
             other->remove_files(dir);
-    bool wrote = false;
     for (const SuiteProtocol* protocol : protocols)
-        if (!protocol->files_folder().empty()) {
+        if (!protocol->files_folder().empty())
             protocol->write_files(index, dir, console);
-            wrote = true;
-        }
-    return wrote;
 }
 
 } // namespace mhb

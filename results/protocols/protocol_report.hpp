@@ -21,8 +21,8 @@ bool writes_protocol_files(const std::vector<const SuiteProtocol*>& protocols);
 
 // Writes the files of `protocols` into the budget's report directory `dir` and removes those an
 // earlier report wrote there for a protocol no longer in force (unless one in force writes the same
-// folder). Returns whether a protocol in force wrote files.
-bool write_protocol_files(const std::vector<const SuiteProtocol*>& protocols, const StudyIndex& index,
+// folder).
+void write_protocol_files(const std::vector<const SuiteProtocol*>& protocols, const StudyIndex& index,
                           const std::filesystem::path& dir, std::ostream& console);
 
 } // namespace mhb

@@ -19,7 +19,7 @@ public:
 
     // Those of an earlier report for a protocol no longer in force are removed: they would mislead.
     void write_tables(const BudgetReportContext& budget) const override {
-        (void)write_protocol_files(budget.protocols, budget.index, budget.directory, budget.console);
+        write_protocol_files(budget.protocols, budget.index, budget.directory, budget.console);
     }
 };
 

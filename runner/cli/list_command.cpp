@@ -127,7 +127,10 @@ int print_one(const std::string& what, const std::string& name, const Components
             print_entry(std::cout, entry);
             std::cout << "\nWrite it as name:key=value,... e.g. " << example_spec(entry) << '\n';
         };
-        what == "algorithms" ? print(components.algorithms) : print(components.problems);
+        if (what == "algorithms")
+            print(components.algorithms);
+        else
+            print(components.problems);
     } else if (what == "studies") {
         print_study(std::cout, find_study_preset(name));
     } else {
