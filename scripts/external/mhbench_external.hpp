@@ -1,4 +1,4 @@
-// A header-only C++ client of mhbench's external protocol (README, "External programs (any
+// A header-only C++ client of mhbench's external protocol (docs/extending.md, "External programs (any
 // language)"), for a model or an optimiser built outside mhbench. Needs only nlohmann-json
 // (Debian: nlohmann-json3-dev). Numbers go out with %.17g, so every double arrives exactly;
 // infinities and NaN travel as the strings "inf", "-inf", "nan".

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A (1+lambda)-ES with the 1/5th success rule (Rechenberg 1973; Beyer and Schwefel 2002) as an
-mhbench external optimiser: an ask/tell loop over the protocol (README, "External programs (any
+mhbench external optimiser: an ask/tell loop over the protocol (docs/extending.md, "External programs (any
 language)"). Standard library only.
 
 Parameters (`params=sigma=0.3;lambda=1`): sigma = initial step as a fraction of the box width

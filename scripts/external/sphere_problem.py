@@ -2,7 +2,7 @@
 """The sphere f(x) = sum of x_i^2 on [-5, 5]^dim as an mhbench external problem.
 
 Standard library only. Run by mhbench as `external:cmd=python3 scripts/external/sphere_problem.py`
-(problem side of the protocol: README, "External programs (any language)"). Parameters come in
+(problem side of the protocol: docs/extending.md, "External programs (any language)"). Parameters come in
 the describe message (`params=dim=5`). json.dumps writes floats as their shortest round-trip text,
 so every value reaches mhbench exactly.
 """
