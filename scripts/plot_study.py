@@ -896,6 +896,8 @@ def box_plot(job, folder, problem, by_algorithm):
 
 def ecdf_figure(job, folder, curves, ylabel, title):
     """curves: (label, evaluations at which a run / target was reached, number of trials)."""
+    from matplotlib.lines import Line2D
+
     labels = [label for label, _, _ in curves]
     fig, (ax,), ncol = new_figure(COLUMN, legend_labels=labels, panel_height=1.8)
     left_out = LeftOut()
@@ -910,8 +912,9 @@ def ecdf_figure(job, folder, curves, ylabel, title):
         ax.step(xs, ys, where="post", color=colour, linestyle=linestyle)
         # Markers on a step curve: a few, at the steps' ends, so the styles are told apart in grey too.
         every = max(1, len(xs) // 6)
-        handles.append(ax.plot(xs[1 + i % every::every], ys[1 + i % every::every], linestyle=linestyle,
-                               marker=marker, color=colour, markersize=3.0, linewidth=0)[0])
+        ax.plot(xs[1 + i % every::every], ys[1 + i % every::every], linestyle="none", marker=marker,
+                color=colour, markersize=3.0)
+        handles.append(Line2D([], [], color=colour, marker=marker, linestyle=linestyle, markersize=3.0))
     log_axis(ax, "x")
     ax.set_xlim(1, right)
     ax.set_ylim(0, 1.02)
