@@ -198,6 +198,19 @@ def log_axis(ax, which="y"):
     axis.set_minor_locator(NullLocator())  # minor ticks: a quarter of a figure's drawing, little to read
 
 
+def short_log_axes(ax):
+    """Labels 2, 3 and 5 times the decades on a log axis that spans less than two decades: with the
+    decades alone it would show one label, or none."""
+    from matplotlib.ticker import FuncFormatter, LogLocator
+
+    for axis, limits in ((ax.xaxis, ax.get_xlim), (ax.yaxis, ax.get_ylim)):
+        low, high = sorted(limits())
+        if axis.get_scale() != "log" or low <= 0 or high / low >= 100:
+            continue
+        axis.set_minor_locator(LogLocator(base=10, subs=(2.0, 3.0, 5.0)))
+        axis.set_minor_formatter(FuncFormatter(lambda v, _p: "%g" % float("%.2g" % v)))
+
+
 def warm_up(mathtext):
     """Draws a tiny figure in both formats: fonts, glyph and (when `mathtext`: the parameters'
     symbols) mathtext caches are then loaded once, before the workers fork."""
@@ -472,6 +485,8 @@ class Job:
         try:
             fig = self.draw(self, *self.args)
             if fig is not None:
+                for ax in fig.axes:
+                    short_log_axes(ax)
                 save(fig, self.out_dir, self.name)
             return {"drawn": 1 if fig is not None else 0, "failed": None, "notes": self.notes}
         except Exception as error:  # noqa: BLE001 - any failure of one figure must not stop the others
@@ -866,8 +881,10 @@ def box_plot(job, folder, problem, by_algorithm):
                            medianprops={"color": "black", "linewidth": 1.0},
                            flierprops={"markersize": 2.5, "markeredgewidth": 0.5})
         for box, flier, position in zip(boxes["boxes"], boxes["fliers"], positions):
-            colour, marker, _ = folder.styles.of(labels[position - 1])
+            colour, marker, linestyle = folder.styles.of(labels[position - 1])
             box.set(facecolor=colour, alpha=0.55, edgecolor="black", linewidth=0.6)
+            if linestyle != "-":  # the 9th algorithm on has a colour again: hatched, as its line is dashed
+                box.set(hatch="////")
             flier.set(marker=marker, markeredgecolor=colour)
     for i, (d, values) in enumerate(zip(kept, data)):
         if not d:  # a box that cannot be drawn says why where it would stand
