@@ -730,6 +730,9 @@ def algorithm_line(ax, folder, label, xs, ys, log_x, index_in_figure, **extra):
     # Markers spaced along the curve (a fraction of the axes' diagonal), each algorithm offset so
     # that markers of curves lying on each other do not hide each other.
     step = 0.11
+    if not any(math.isfinite(y) for y in ys):  # nothing to draw: the legend says so (markevery needs points)
+        return ax.plot([], [], color=colour, marker=marker, linestyle=linestyle,
+                       label=label + " (nothing finite to draw)", **extra)[0]
     return ax.plot(xs, ys, color=colour, marker=marker, linestyle=linestyle, label=label,
                    markevery=((0.013 * index_in_figure) % step, step), markersize=3.2, **extra)[0]
 
