@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
 #include <set>
 #include <utility>
 
 #include "results/analysis/evaluation_counts.hpp"
+#include "results/analysis/relative_gaps.hpp" // short_problem_names
 #include "results/analysis/statistics.hpp"
 #include "results/store/csv.hpp" // CSV as the store writes it, for every room
 
@@ -163,6 +165,22 @@ std::string final_values(const StudyIndex& index) {
             out += prefix(index, g) + std::to_string(r->run_index) + ',' + csv_number(r->best_f) + ',' +
                    std::to_string(r->evaluations) + ',' +
                    (r->evaluations_to_target ? std::to_string(*r->evaluations_to_target) : "") + '\n';
+    return out;
+}
+
+std::string problem_facts(const StudyIndex& index) {
+    std::map<std::string, std::string> f_opts; // every run of a problem knows the same f*, or none
+    for (const auto& g : index.groups())
+        for (const auto* r : g.runs)
+            if (r->f_opt)
+                f_opts.emplace(g.problem, csv_number(*r->f_opt));
+    const std::vector<std::string> names = short_problem_names(index.problems());
+    std::string out = "problem,name,f_opt\n";
+    for (std::size_t p = 0; p < index.problems().size(); ++p) {
+        const auto known = f_opts.find(index.problems()[p]);
+        out += csv_field(index.problems()[p]) + ',' + csv_field(names[p]) + ',' +
+               (known == f_opts.end() ? std::string() : known->second) + '\n';
+    }
     return out;
 }
 

@@ -35,6 +35,9 @@ std::string fitness_curves_by_evaluations(const StudyIndex& index);
 std::string parameter_curves_by_iteration(const StudyIndex& index);
 // problem,algorithm,label,run,best_f,evaluations,evals_to_target
 std::string final_values(const StudyIndex& index);
+// problem,name,f_opt: each problem's short name for titles (short_problem_names) and its known
+// optimum (empty when unknown), so that figures draw the gap f - f* where f* is known.
+std::string problem_facts(const StudyIndex& index);
 
 // The gaps f - f* of the fixed-target ECDF, as COCO's bbob targets: 1e2, 1e1, ..., 1e-8.
 const std::vector<double>& ecdf_target_gaps();

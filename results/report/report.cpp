@@ -211,6 +211,7 @@ void write_curve_data(const StudyIndex& index, const std::string& budget, const 
     write_file_atomically(dir / "curves_evaluations.csv", fitness_curves_by_evaluations(index));
     write_file_atomically(dir / "parameters_iteration.csv", parameter_curves_by_iteration(index));
     write_file_atomically(dir / "final_values.csv", final_values(index));
+    write_file_atomically(dir / "problems.csv", problem_facts(index));
     write_file_atomically(dir / "target_hits.csv", target_hits(index));
     const std::optional<std::string> critical_difference = critical_difference_data(index, alpha);
     write_or_remove(dir / "critical_difference.csv", critical_difference);
@@ -232,6 +233,14 @@ void write_curve_data(const StudyIndex& index, const std::string& budget, const 
     files.budget_txt = !budget.empty();
 }
 
+// The folders of the budgets, in order.
+std::vector<std::string> folders_of(const std::vector<BudgetSection>& sections) {
+    std::vector<std::string> folders;
+    for (const auto& section : sections)
+        folders.push_back(section.folder);
+    return folders;
+}
+
 // The figures of the budget unless `figures` is false (set to false when they are interrupted),
 // and what the budget's section of the study-level documents (index.html) says about them.
 void draw_budget_figures(const ReportOptions& options, const fs::path& dir, std::ostream& console,
@@ -248,13 +257,20 @@ void draw_budget_figures(const ReportOptions& options, const fs::path& dir, std:
     }
 }
 
-// Everything of one budget in `dir`: tables, curve data, effects, what every reporter writes of
-// it, and the figures unless `figures` is false (set to false when they were interrupted).
-// `section` gets the budget's part of the documents that hold the whole report.
-void write_budget_report(const StudyData& study, const std::string& budget, const fs::path& dir,
-                         const std::string& heading, const ReportOptions& options,
-                         const std::vector<const Reporter*>& reporters, std::ostream& console, bool& figures,
-                         BudgetSection& section) {
+// The budget's README.md, once its figures are drawn (or not): it lists what the folder holds.
+void write_budget_readme(const fs::path& dir, const BudgetSection& section, ReportFiles files) {
+    files.figures = fs::exists(dir / "figures");
+    write_file_atomically(dir / "README.md", report_readme(section.tables, files));
+}
+
+// Everything of one budget in `dir` but its figures: tables, curve data, effects, what every
+// reporter writes of it. `section` gets the budget's part of the documents that hold the whole
+// report. Returns what the folder's README.md lists (written by write_budget_readme, after the
+// figures).
+ReportFiles write_budget_tables(const StudyData& study, const std::string& budget, const fs::path& dir,
+                                const std::string& heading, const ReportOptions& options,
+                                const std::vector<const Reporter*>& reporters, std::ostream& console,
+                                BudgetSection& section) {
     make_report_directory(dir);
     const StudyIndex index(study, budget);
     ComparisonOptions comparison;
@@ -282,9 +298,7 @@ void write_budget_report(const StudyData& study, const std::string& budget, cons
     section.budget = budget;
     section.directory = dir;
     section.tables = tables;
-    draw_budget_figures(options, dir, console, figures, section);
-    files.figures = fs::exists(dir / "figures");
-    write_file_atomically(dir / "README.md", report_readme(tables, files));
+    return files;
 }
 
 } // namespace
@@ -312,22 +326,32 @@ ReportOutcome build_report(const StudyData& study, const ReportOptions& options,
     bool figures = options.figures;
     std::vector<BudgetSection> sections; // of report.md, report.tex, index.html: one per budget
     if (budgets.size() == 1) {
-        write_budget_report(study, budgets.front(), out_dir, heading, options, reporters, console, figures,
-                            sections.emplace_back());
+        const ReportFiles files = write_budget_tables(study, budgets.front(), out_dir, heading, options,
+                                                      reporters, console, sections.emplace_back());
+        draw_budget_figures(options, out_dir, console, figures, sections.back());
+        write_budget_readme(out_dir, sections.back(), files);
     } else {
         // Several budgets: one complete report per budget in <out>/<budget slug>/, the combined
-        // report.md / report.tex and budgets.csv (budget,directory) on top.
+        // report.md / report.tex and budgets.csv (budget,directory) on top. The figures of every
+        // budget are drawn by one run of the script (budgets.csv names the folders): Python and
+        // matplotlib start once, and the figures of all budgets share the workers.
         std::string index_csv = "budget,directory\n";
-        std::vector<std::string> folders;
+        std::vector<ReportFiles> files;
         for (const auto& budget : budgets) {
-            const std::string slug = folders.emplace_back(budget_slug(budget));
+            const std::string slug = budget_slug(budget);
             index_csv += csv_field(budget) + ',' + csv_field(slug) + '\n';
             sections.emplace_back().folder = slug;
-            write_budget_report(study, budget, out_dir / slug, "budget " + budget + ": ", options, reporters,
-                                console, figures, sections.back());
+            files.push_back(write_budget_tables(study, budget, out_dir / slug, "budget " + budget + ": ",
+                                                options, reporters, console, sections.back()));
         }
         write_file_atomically(out_dir / "budgets.csv", index_csv);
-        write_file_atomically(out_dir / "README.md", budgets_readme(budgets, folders));
+        write_file_atomically(out_dir / "README.md", budgets_readme(budgets, folders_of(sections)));
+        draw_budget_figures(options, out_dir, console, figures, sections.front());
+        for (std::size_t b = 0; b < sections.size(); ++b) {
+            sections[b].figures_current = sections.front().figures_current;
+            sections[b].figures_note = sections.front().figures_note;
+            write_budget_readme(out_dir / sections[b].folder, sections[b], files[b]);
+        }
     }
     ReportOutcome outcome;
     const StudyReportContext context{study, out_dir, sections, console};

@@ -2,7 +2,7 @@
 // report directory the tables (Markdown, LaTeX, CSV; the paper's Tables 2-4 for PMSM problems, the
 // statistics tables for any problem, the effects of each component for variants forming a 2^k
 // on/off design), the curve data (CSV) and, when a Python with matplotlib is found, the figures
-// (figures/*.pdf, *.png and *.svg, drawn by scripts/plot_study.py from the curve data), the runs in
+// (figures/*.pdf and *.png, drawn by scripts/plot_study.py from the curve data), the runs in
 // the IOHprofiler format (ioh/, for IOHanalyzer), and index.html, one self-contained page with
 // every table and figure (a section per budget when there are several).
 // A study with several budgets gets all of that once per budget, in <report>/<budget slug>/ (see

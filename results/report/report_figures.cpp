@@ -110,7 +110,13 @@ Figures draw_figures(const ReportOptions& options, const fs::path& out_dir, std:
     if (!failures.empty())
         note = "some figures could not be drawn (" + failures.front() + (failures.size() > 1 ? ", ..." : "") +
                ")";
-    console << "figures: " << figures.string() << '\n';
+    // A report of several budgets draws into each budget's folder: the top folder's stays empty.
+    if (fs::is_empty(figures, ec) && !ec) {
+        fs::remove(figures, ec);
+        console << "figures: " << (out_dir / "<budget>" / "figures").string() << '\n';
+    } else {
+        console << "figures: " << figures.string() << '\n';
+    }
     return Figures::drawn_or_skipped;
 }
 

@@ -95,6 +95,17 @@ One row per successful run.
 | evaluations | the evaluations it spent |
 | evals_to_target | the evaluation at which it reached the study's target (f - f* <= target, or f - f* <= relative_target x abs(f*) for a relative target); empty without a target or when not reached |
 
+### problems.csv
+
+One row per problem, in the study's order: what the figures need to title a problem and to draw
+the gap f - f* where the optimum is known.
+
+| column | meaning |
+| --- | --- |
+| problem | the problem's spec |
+| name | a short name: the family and the parameters that differ between the study's problems |
+| f_opt | its known optimum f*; empty when unknown |
+
 )";
 
 const char* const target_hits_file = R"(### target_hits.csv
@@ -223,8 +234,9 @@ std::string report_readme(const std::vector<Table>& tables, const ReportFiles& f
         out += "- `cec/`: the CEC organisers' result files, a row per checkpoint and a column per run; its "
                "README names every checkpoint's evaluation count.\n";
     if (files.figures)
-        out += "- `figures/`: every figure as PDF, PNG and SVG, drawn by scripts/plot_study.py from the "
-               "CSV files above.\n";
+        out += "- `figures/`: every figure as PDF (vector, fonts embedded) and PNG, drawn by "
+               "scripts/plot_study.py from the CSV files above; `figures/styles.csv` gives each "
+               "algorithm's colour, marker and line style.\n";
     if (files.budget_txt)
         out += "- `budget.txt`: the budget every run of this report had.\n";
     if (files.combined)

@@ -406,7 +406,8 @@ int run_run_command(const std::vector<std::string>& args) {
     const int threads = resolve_thread_count(settings.threads);
     const std::filesystem::path dir = vm.count("out") != 0 ? vm["out"].as<std::string>() : "studies/" + name;
     if (vm["dry-run"].as<bool>()) {
-        std::cout << dry_run_text(*prepared, dir, threads);
+        std::cout << dry_run_text(*prepared, dir, threads, !vm["no-report"].as<bool>(),
+                                  !vm["no-figures"].as<bool>());
         return exit_ok;
     }
     if (!ranks_read_the_same(*prepared))

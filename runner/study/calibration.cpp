@@ -5,6 +5,7 @@
 #include <map>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
+#include <thread>
 
 #include "runner/run/execute_run.hpp"
 
@@ -161,6 +162,81 @@ StudyEstimate estimate_study(const PreparedStudy& study, int threads, std::size_
     }
     estimate.calibration_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - calibration_started).count();
+    return estimate;
+}
+
+namespace {
+
+// CPU seconds of one figure of each kind, PDF and PNG, measured on the project's 2-vCPU VM (AMD
+// EPYC, Debian 12, matplotlib 3.6) from the paper and ablation presets' reports with
+//   python3 -c 'import plot_study as p; p.import_matplotlib(); ...; job.draw(); fig.savefig(...)'
+// (each kind's median; a figure's cost grows a little with the algorithms it draws).
+constexpr double figure_startup_seconds = 0.9; // python3, matplotlib and the warm-up figure
+constexpr double convergence_seconds = 0.12;   // + per algorithm:
+constexpr double convergence_per_algorithm = 0.01;
+constexpr double parameters_seconds = 0.35; // four panels; + per algorithm:
+constexpr double parameters_per_algorithm = 0.03;
+constexpr double final_values_seconds = 0.12;
+constexpr double ecdf_seconds = 0.15;
+constexpr double ranks_seconds = 0.1;    // critical difference, relative gaps
+constexpr double effects_seconds = 0.25; // each of the three figures of a factorial design
+// The tables and curve data: measured `mhbench report --no-figures` of the paper (60 runs) and
+// ablation (960 runs) presets.
+constexpr double tables_seconds_base = 0.05;
+constexpr double tables_seconds_per_run = 0.0004;
+
+// Whether the algorithms look like a 2^k on/off grid (labels such as itlbo[T+S-O+]): the report
+// then analyses it as a factorial design, with three figures.
+bool factorial_grid(const PreparedStudy& study) {
+    if (study.algorithms.size() < 4)
+        return false;
+    for (const auto& a : study.algorithms)
+        if (a.info.label.find('[') == std::string::npos)
+            return false;
+    return true;
+}
+
+} // namespace
+
+std::int64_t ReportEstimate::figure_count() const {
+    std::int64_t total = 0;
+    for (const auto& kind : figures)
+        total += kind.second;
+    return total;
+}
+
+ReportEstimate estimate_report(const PreparedStudy& study, bool figures) {
+    ReportEstimate estimate;
+    estimate.tables_seconds =
+        tables_seconds_base + tables_seconds_per_run * static_cast<double>(study.run_count());
+    if (!figures)
+        return estimate;
+    const double algorithms = static_cast<double>(study.algorithms.size());
+    std::int64_t convergence = 0, parameters = 0, finals = 0, ecdf = 0, ranks = 0, effects = 0;
+    for (const StudyBudget& budget : study.study.budgets) {
+        for (const auto& p : study.problems) {
+            const bool known = p.problem->known_optimum().has_value();
+            convergence += budget.max_iterations ? 2 : 1; // by iteration only where iterations count
+            parameters += p.problem->parameter_names().empty() ? 0 : 1;
+            finals += 1;
+            ecdf += (known ? 1 : 0) + (known && (budget.target_error || budget.relative_target) ? 1 : 0);
+        }
+        ranks += study.problems.size() >= 2 && study.algorithms.size() >= 2 ? 1 : 0;
+        effects += factorial_grid(study) ? 3 : 0;
+    }
+    estimate.figures = {{"convergence", convergence},   {"parameters", parameters},
+                        {"final_values", finals},       {"ecdf", ecdf},
+                        {"critical_difference", ranks}, {"effects", effects}};
+    const double cpu =
+        static_cast<double>(convergence) * (convergence_seconds + convergence_per_algorithm * algorithms) +
+        static_cast<double>(parameters) * (parameters_seconds + parameters_per_algorithm * algorithms) +
+        static_cast<double>(finals) * final_values_seconds + static_cast<double>(ecdf) * ecdf_seconds +
+        static_cast<double>(ranks) * ranks_seconds + static_cast<double>(effects) * effects_seconds;
+    // The script draws on as many workers as the process may use CPUs (plot_study.py).
+    const double workers = std::max(1.0, static_cast<double>(std::thread::hardware_concurrency()));
+    estimate.figures_seconds =
+        figure_startup_seconds +
+        cpu / std::min(workers, std::max(1.0, static_cast<double>(estimate.figure_count())));
     return estimate;
 }
 

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "results/store/run_record.hpp"
@@ -48,5 +50,20 @@ double extrapolated_evaluations(const RunRecord& short_run, const Budget& budget
 // CPU seconds on one thread (wall time of each run, which also counts an external program's).
 StudyEstimate estimate_study(const PreparedStudy& study, int threads = 1,
                              std::size_t problems_per_dimension = 2);
+
+// What the report after the runs costs: its tables, and the figures scripts/plot_study.py draws,
+// counted by kind from the study (the script's own plan: `plot_study.py --plan REPORT_DIR`).
+struct ReportEstimate {
+    double tables_seconds = 0;
+    std::vector<std::pair<std::string, std::int64_t>> figures; // kind and count, in the script's order
+    double figures_seconds = 0; // wall time: the interpreter's start, then the figures on `workers`
+    [[nodiscard]] std::int64_t figure_count() const;
+    [[nodiscard]] double seconds() const { return tables_seconds + figures_seconds; }
+};
+
+// The report's estimate, `figures` false for --no-figures. Per-kind costs are measured once on the
+// project's 2-vCPU machine (calibration.cpp says how) and used as they are: a rough figure, like
+// the runs' estimate, but no longer missing from it.
+ReportEstimate estimate_report(const PreparedStudy& study, bool figures);
 
 } // namespace mhb

@@ -51,9 +51,26 @@ std::string counted(std::size_t n, const char* noun) {
     return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
 }
 
+// "report: tables about 0.4 s; 31 figures (convergence 11, ...) about 4.2 s".
+std::string report_line(const ReportEstimate& estimate) {
+    char text[96];
+    std::snprintf(text, sizeof text, "report: tables about %.2g s", estimate.tables_seconds);
+    std::string out = text;
+    if (estimate.figures.empty())
+        return out + "; figures not drawn (--no-figures)";
+    std::string kinds;
+    for (const auto& [kind, count] : estimate.figures)
+        if (count > 0)
+            kinds += (kinds.empty() ? "" : ", ") + kind + " " + std::to_string(count);
+    std::snprintf(text, sizeof text, " about %.2g s", estimate.figures_seconds);
+    return out + "; " + counted(static_cast<std::size_t>(estimate.figure_count()), "figure") + " (" + kinds +
+           ")" + text + " (PDF and PNG)";
+}
+
 } // namespace
 
-std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::path& dir, int threads) {
+std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::path& dir, int threads,
+                         bool report, bool figures) {
     std::ostringstream out;
     const Study& s = prepared.study;
     out << "mhbench run --dry-run: nothing is run or written.\n\n"
@@ -101,11 +118,16 @@ std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::p
     for (const SuiteProtocol* protocol : protocols_in_force(s.protocol))
         if (const std::string line = protocol->dry_run_line(); !line.empty())
             out << '\n' << line << '\n';
-    const double seconds = estimate.cpu_seconds() / std::max(threads, 1);
-    char line[160];
-    std::snprintf(line, sizeof line, "%s evaluations, roughly %.3g s on %d thread%s",
-                  count_text(estimate.evaluations()).c_str(), seconds, threads, threads == 1 ? "" : "s");
-    out << "\ntotal: " << line << " (calibrated on " << estimate.calibration_runs << " short runs, "
+    const double run_seconds = estimate.cpu_seconds() / std::max(threads, 1);
+    const ReportEstimate after = estimate_report(prepared, figures);
+    const double report_seconds = report ? after.seconds() : 0.0;
+    if (report)
+        out << '\n' << report_line(after) << '\n';
+    char line[200];
+    std::snprintf(line, sizeof line, "%s evaluations, roughly %.3g s on %d thread%s (runs %.3g s%s)",
+                  count_text(estimate.evaluations()).c_str(), run_seconds + report_seconds, threads,
+                  threads == 1 ? "" : "s", run_seconds, report ? ", then the report" : "");
+    out << "\ntotal: " << line << " (runs calibrated on " << estimate.calibration_runs << " short runs, "
         << duration_text(estimate.calibration_seconds) << ")\n";
     if (prepared.algorithms.size() > 1)
         out << "time by algorithm: " << algorithm_shares(prepared, estimate) << '\n';

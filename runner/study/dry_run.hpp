@@ -11,6 +11,8 @@
 
 namespace mhb {
 
-std::string dry_run_text(const PreparedStudy& study, const std::filesystem::path& dir, int threads);
+// `report` and `figures`: what the run does after the runs (--no-report, --no-figures), estimated too.
+std::string dry_run_text(const PreparedStudy& study, const std::filesystem::path& dir, int threads,
+                         bool report = true, bool figures = true);
 
 } // namespace mhb

@@ -136,7 +136,10 @@ TEST(CliRun, DryRunPrintsTheExpandedStudyAndItsCostAndRunsNothing) {
     EXPECT_TRUE(has("  sphere:dim=3\n"));
     EXPECT_TRUE(has("  evaluations=300: 15000 evaluations\n")) << r.out; // 5 x 2 x 5 x 300, exactly
     EXPECT_TRUE(has("  iterations=4: about ")) << r.out;
-    EXPECT_TRUE(has("on 2 threads (calibrated on ")) << r.out;
+    EXPECT_TRUE(has("on 2 threads (runs ")) << r.out;
+    EXPECT_TRUE(has("(runs calibrated on ")) << r.out;
+    EXPECT_TRUE(has("\nreport: tables about ")) << r.out; // the report and its figures are estimated too
+    EXPECT_TRUE(has(" figures (convergence ")) << r.out;
 }
 
 TEST(CliRun, StudyFileAndCommandLineErrorsAreReportedTogetherWithFileAndLine) {

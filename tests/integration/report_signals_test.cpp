@@ -84,7 +84,7 @@ RunRecord pmsm_run(std::int64_t id, const std::string& algorithm, const std::str
 
 const std::vector<std::string> problems = {"pmsm:load=2,speed=2500", "pmsm:load=2,speed=1500"};
 
-// Two PMSM problems x two algorithms x three runs: about twenty figures, several seconds.
+// Two PMSM problems x two algorithms x three runs: eleven figures, a few seconds.
 StudyData study_in_memory(const fs::path& directory) {
     StudyData data;
     data.directory = directory;
@@ -259,7 +259,7 @@ TEST(SlowReportSignalsCli, SigkillDuringFiguresLeavesNoProcessAndTheSameCommandC
     EXPECT_EQ(again.exit_code, 0) << again.err;
     EXPECT_EQ(again.err, "");
     const fs::path figures = study / "report" / "figures";
-    EXPECT_GE(count_with_extension(figures, ".png"), 15U);
+    EXPECT_GE(count_with_extension(figures, ".png"), 11U); // 5 per problem and the CD diagram (issue 37)
     EXPECT_EQ(count_with_extension(figures, ".png"), count_with_extension(figures, ".pdf"));
     EXPECT_EQ(temporary_files(study / "report"), std::vector<std::string>{});
 }

@@ -224,7 +224,7 @@ TEST(SlowRelativeGaps, TheFigureIsDrawnWhereMatplotlibIs) {
     if (!find_matplotlib_python(ReportOptions().python_candidates))
         GTEST_SKIP() << "no Python with matplotlib";
     const fs::path dir = gap_report("figure", true);
-    for (const char* ext : {".pdf", ".png", ".svg"})
+    for (const char* ext : {".pdf", ".png"}) // no SVG since issue 37: the page shows the PNG
         EXPECT_GT(fs::file_size(dir / "figures" / (std::string("relative_gaps") + ext)), 1000u) << ext;
 }
 
