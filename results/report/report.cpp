@@ -11,6 +11,7 @@
 #include "results/analysis/curve_data.hpp"
 #include "results/analysis/factorial_effects.hpp"
 #include "results/analysis/relative_gaps.hpp"
+#include "results/analysis/verdict.hpp"
 #include "results/protocols/protocol_report.hpp"
 #include "results/report/report_figures.hpp"
 #include "results/report/report_readme.hpp"
@@ -22,6 +23,7 @@
 #include "results/tables/comparison_tables.hpp"
 #include "results/tables/effects_table.hpp"
 #include "results/tables/relative_gap_table.hpp"
+#include "results/tables/verdict_tables.hpp"
 
 namespace mhb {
 
@@ -268,7 +270,11 @@ void write_budget_report(const StudyData& study, const std::string& budget, cons
     const std::optional<RelativeGaps> gaps = relative_gaps(index);
     const std::vector<Table> tables = budget_tables(index, comparison, factorial.designs, factorial.rejected,
                                                     !study.algorithms.empty(), protocols, gaps);
-    const BudgetReportContext context{index, tables, dir, protocols, options.ioh_precision, console};
+    const BudgetVerdict verdict = budget_verdict(index, options.alpha, factorial.designs);
+    const std::size_t budget_count = study_budgets(study).size();
+    const BudgetReportContext context{
+        index,       tables, dir, protocols, options.ioh_precision, console, verdict, options.console_tables,
+        budget_count};
     for (const Reporter* reporter : reporters)
         reporter->write_tables(context);
     ReportFiles files;
@@ -282,6 +288,7 @@ void write_budget_report(const StudyData& study, const std::string& budget, cons
     section.budget = budget;
     section.directory = dir;
     section.tables = tables;
+    section.verdict = verdict_tables(verdict);
     draw_budget_figures(options, dir, console, figures, section);
     files.figures = fs::exists(dir / "figures");
     write_file_atomically(dir / "README.md", report_readme(tables, files));
