@@ -29,8 +29,6 @@ th, td { padding: .25rem .6rem; border-bottom: 1px solid #ececec; white-space: n
 th { background: #f4f5f7; border-bottom: 2px solid #c9ccd1; font-weight: 600; }
 .l { text-align: left; }
 td.long { white-space: normal; min-width: 20rem; }
-tbody tr:nth-child(even) { background: #fafafa; }
-tbody tr:hover { background: #eef4ff; }
 th button { all: inherit; cursor: pointer; padding: 0; border: 0; background: none; }
 th button:focus-visible { outline: 2px solid #0b57a4; outline-offset: 2px; }
 th[aria-sort] button::after { content: " \2195"; color: #9aa0a6; }
@@ -38,7 +36,17 @@ th[aria-sort="ascending"] button::after { content: " \25B2"; color: #1c1c1c; }
 th[aria-sort="descending"] button::after { content: " \25BC"; color: #1c1c1c; }
 .grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(100%, 34rem), 1fr)); gap: 0 1.5rem; }
 figure { margin: 1rem 0 1.6rem; break-inside: avoid; page-break-inside: avoid; min-width: 0; }
-figure svg { display: block; max-width: 100%; height: auto; }
+figure img { display: block; max-width: 100%; height: auto; }
+.swatch { display: inline-block; width: .75em; height: .75em; border-radius: 2px; margin-right: .35em;
+  vertical-align: -.05em; border: 1px solid rgba(0, 0, 0, .25); }
+.pages { font-weight: 600; }
+tbody tr { background: #fff; }
+tbody tr:nth-child(even) { background: #fafafa; }
+thead th:first-child, tbody td:first-child, tfoot td:first-child { position: sticky; left: 0; z-index: 1;
+  background: inherit; box-shadow: inset -1px 0 0 #d5d8dc; }
+thead th:first-child { background: #f4f5f7; }
+tfoot tr { background: #fff; }
+tbody tr:hover { background: #eef4ff; }
 figcaption { font-size: .84rem; color: #404040; margin-top: .3rem; }
 figcaption code { font-size: .8rem; }
 @media print {

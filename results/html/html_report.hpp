@@ -1,9 +1,12 @@
-// The report as one self-contained web page, report/index.html: the study's context, a table of
-// contents, every table of the report (sortable by a click on a header; plain HTML tables without
-// JavaScript) and every figure inlined as SVG (from figures/*.svg, drawn by scripts/plot_study.py).
-// It loads nothing: no network, no other file (its Content-Security-Policy forbids any fetch), so
-// it can be mailed or archived alone. A study with several budgets gets one page with a section per
-// budget. The same inputs give the same bytes.
+// The report as web pages: report/index.html opens with the verdict of every budget (who won, as
+// tables whose algorithm names wear their figures' colours) and the key figures of each problem
+// (convergence and final values), then, on a small study, every table and figure, and the study's
+// metadata (context.ini, study.ini) last. A study with several budgets, or too many table rows for
+// one page, gets a page per budget (budget_<slug>.html: its tables and all its figures) linked
+// from index.html, so that no page grows with the study beyond its tables. Figures are images
+// (figures/NAME.png, lazily loaded, each linking to its PDF), never inlined; nothing else is
+// loaded (no CSS, script or font from elsewhere: the Content-Security-Policy allows images of the
+// report only). The same inputs give the same bytes.
 #pragma once
 
 #include <cstddef>
@@ -20,10 +23,11 @@ struct HtmlBudgetSection {
     std::string folder;              // its report folder under the page's ("" when the layout is flat)
     std::filesystem::path directory; // that folder on disk: its figures/*.svg are inlined
     std::vector<Table> tables;
+    std::vector<Table> verdict; // the verdict's tables (results/tables/verdict_tables.hpp), shown first
     // What the reader must know about the figures (skipped, failed, interrupted, not drawn with
     // --no-figures); empty when they were drawn without trouble.
     std::string figures_note;
-    // False when the figures were not drawn by this report: SVG files found are an earlier report's.
+    // False when the figures were not drawn by this report: PNG files found are an earlier report's.
     bool figures_current = true;
 };
 
@@ -32,17 +36,27 @@ struct HtmlReportContent {
     std::string context_text; // context.ini: version, commit, compiler, threads, date, command
     std::string study_text;   // study.ini: the study as run
     std::vector<HtmlBudgetSection> budgets;
-    // Past this many bytes of SVG the remaining figures are named instead of inlined (a study of
-    // thousands of problems would otherwise make a page no browser opens).
-    std::size_t max_inline_svg_bytes = std::size_t{64} << 20;
+    // Past this many table rows in all (about 0.4 kB each) every budget gets a page of its own, as
+    // with several budgets: index.html keeps the verdict and the key figures.
+    std::size_t rows_on_one_page = 1500;
+    // index.html shows the key figures of at most this many problems per budget; the budget's page
+    // shows them all.
+    std::size_t key_figure_problems = 8;
 };
 
-// The page. Reads the SVG files of each section's figures/ folder; one that cannot be read or holds
-// no <svg> element is named on the page instead.
+struct HtmlPage {
+    std::string file; // "index.html", "budget_iterations_150.html"
+    std::string text;
+};
+
+// The pages, index.html first. Lists the PNG files of each section's figures/ folder and reads its
+// styles.csv (html_figures.hpp).
+std::vector<HtmlPage> render_html_pages(const HtmlReportContent& content);
+// index.html alone.
 std::string render_html_report(const HtmlReportContent& content);
 
-// Writes `dir`/index.html atomically and returns its path. Throws std::runtime_error when it
-// cannot be written.
+// Writes every page into `dir` atomically, removes the budget pages of an earlier report that this
+// one has not, and returns index.html's path. Throws std::runtime_error when a page cannot be written.
 std::filesystem::path write_html_report(const std::filesystem::path& dir, const HtmlReportContent& content);
 
 // file:///absolute/path with every byte outside [A-Za-z0-9-._~/] percent-encoded.

@@ -42,7 +42,33 @@ std::vector<bool> text_columns(const Table& table) {
     return text;
 }
 
-std::string cell_html(const TableCell& cell, bool text_column) {
+// The leading columns that name a row, and the columns that say what it means.
+bool key_column(const std::string& header) {
+    for (const char* key : {"Problem", "Algorithm", "Rank", "Design", "Label", "Condition", "Component"})
+        if (header == key)
+            return true;
+    return false;
+}
+
+bool decisive_column(const std::string& header) {
+    for (const char* decisive :
+         {"Result", "Reading", "p (Holm)", "Signed-rank p (Holm)", "Post-hoc p (Holm)", "vs best", "Verdict"})
+        if (header == decisive)
+            return true;
+    return false;
+}
+
+// The label of an algorithm column's cell with a swatch of its figures' colour.
+std::string coloured_label(const std::string& text, const std::map<std::string, std::string>& colours) {
+    const auto found = colours.find(text);
+    if (found == colours.end())
+        return html_escape(text);
+    return "<span class=\"swatch\" style=\"background:" + html_escape(found->second) + "\"></span>" +
+           html_escape(text);
+}
+
+std::string cell_html(const TableCell& cell, bool text_column,
+                      const std::map<std::string, std::string>* colours = nullptr) {
     std::string classes;
     if (text_column)
         classes = "l";
@@ -54,14 +80,30 @@ std::string cell_html(const TableCell& cell, bool text_column) {
     if (!cell.value.empty() && cell.value != cell.text)
         out += " data-value=\"" + html_escape(cell.value) + "\"";
     out += '>';
-    const std::string text = html_escape(cell.text);
+    const std::string text =
+        colours != nullptr ? coloured_label(cell.text, *colours) : html_escape(cell.text);
     out += cell.bold && !text.empty() ? "<strong>" + text + "</strong>" : text;
     return out + "</td>";
 }
 
 } // namespace
 
-std::string render_html_table(const Table& table, const std::string& anchor, int heading_level) {
+std::vector<std::size_t> html_column_order(const std::vector<std::string>& header) {
+    std::vector<std::size_t> order;
+    std::size_t keys = 0;
+    while (keys < header.size() && key_column(header[keys]))
+        order.push_back(keys++);
+    for (std::size_t c = keys; c < header.size(); ++c)
+        if (decisive_column(header[c]))
+            order.push_back(c);
+    for (std::size_t c = keys; c < header.size(); ++c)
+        if (!decisive_column(header[c]))
+            order.push_back(c);
+    return order;
+}
+
+std::string render_html_table(const Table& table, const std::string& anchor, int heading_level,
+                              const std::map<std::string, std::string>& colours) {
     const std::string h = std::to_string(std::clamp(heading_level, 2, 6));
     const std::string caption_id = anchor + "-caption";
     std::string out = "<section class=\"table\" id=\"" + html_escape(anchor) + "\">\n";
@@ -74,25 +116,27 @@ std::string render_html_table(const Table& table, const std::string& anchor, int
         out += " aria-describedby=\"" + html_escape(caption_id) + "\"";
     out += ">\n<thead><tr>";
     const std::vector<bool> text = text_columns(table);
-    for (std::size_t c = 0; c < table.header.size(); ++c)
+    const std::vector<std::size_t> order = html_column_order(table.header);
+    for (std::size_t c : order)
         out += std::string("<th scope=\"col\"") + (text[c] ? " class=\"l\"" : "") + ">" +
                html_escape(table.header[c]) + "</th>";
     out += "</tr></thead>\n<tbody>\n";
-    for (const auto& row : table.rows) {
-        out += "<tr>";
-        for (std::size_t c = 0; c < row.size(); ++c)
-            out += cell_html(row[c], c < text.size() && text[c]);
-        out += "</tr>\n";
-    }
+    const auto row_html = [&](const std::vector<TableCell>& row) {
+        std::string tr = "<tr>";
+        for (std::size_t c : order)
+            if (c < row.size())
+                tr += cell_html(row[c], text[c],
+                                table.header[c] == "Algorithm" || table.header[c] == "Label" ? &colours
+                                                                                             : nullptr);
+        return tr + "</tr>\n";
+    };
+    for (const auto& row : table.rows)
+        out += row_html(row);
     out += "</tbody>\n";
     if (!table.footer.empty()) { // the w/t/l counts: under the body, never sorted with it
         out += "<tfoot>\n";
-        for (const auto& row : table.footer) {
-            out += "<tr>";
-            for (std::size_t c = 0; c < row.size(); ++c)
-                out += cell_html(row[c], c < text.size() && text[c]);
-            out += "</tr>\n";
-        }
+        for (const auto& row : table.footer)
+            out += row_html(row);
         out += "</tfoot>\n";
     }
     return out + "</table></div>\n</section>\n";

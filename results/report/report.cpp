@@ -11,6 +11,7 @@
 #include "results/analysis/curve_data.hpp"
 #include "results/analysis/factorial_effects.hpp"
 #include "results/analysis/relative_gaps.hpp"
+#include "results/analysis/verdict.hpp"
 #include "results/protocols/protocol_report.hpp"
 #include "results/report/report_figures.hpp"
 #include "results/report/report_readme.hpp"
@@ -22,6 +23,7 @@
 #include "results/tables/comparison_tables.hpp"
 #include "results/tables/effects_table.hpp"
 #include "results/tables/relative_gap_table.hpp"
+#include "results/tables/verdict_tables.hpp"
 
 namespace mhb {
 
@@ -284,7 +286,11 @@ ReportFiles write_budget_tables(const StudyData& study, const std::string& budge
     const std::optional<RelativeGaps> gaps = relative_gaps(index);
     const std::vector<Table> tables = budget_tables(index, comparison, factorial.designs, factorial.rejected,
                                                     !study.algorithms.empty(), protocols, gaps);
-    const BudgetReportContext context{index, tables, dir, protocols, options.ioh_precision, console};
+    const BudgetVerdict verdict = budget_verdict(index, options.alpha, factorial.designs);
+    const std::size_t budget_count = study_budgets(study).size();
+    const BudgetReportContext context{
+        index,       tables, dir, protocols, options.ioh_precision, console, verdict, options.console_tables,
+        budget_count};
     for (const Reporter* reporter : reporters)
         reporter->write_tables(context);
     ReportFiles files;
@@ -298,6 +304,7 @@ ReportFiles write_budget_tables(const StudyData& study, const std::string& budge
     section.budget = budget;
     section.directory = dir;
     section.tables = tables;
+    section.verdict = verdict_tables(verdict);
     return files;
 }
 

@@ -45,6 +45,8 @@ struct ReportOptions {
     // Table formats, by reporter name (results/reporters/): --format; every export is always written.
     std::set<std::string> formats = default_table_formats();
     bool figures = true;
+    // The console prints every table in Markdown (--tables), not only the verdict of each budget.
+    bool console_tables = false;
     IohPrecision ioh_precision = IohPrecision::logger; // raw_y of ioh/*.dat
     std::filesystem::path plot_script;                 // scripts/plot_study.py; empty: figures are skipped
     // Interpreters tried in order; the first that can `import matplotlib` draws the figures.

@@ -1,5 +1,6 @@
-// html: index.html, the whole report on one self-contained page (results/html/html_report.hpp),
-// rebuilt by every report from its tables and whatever figures/*.svg hold; `--open` shows it.
+// html: index.html, the verdict first, then the key figures, the tables and the other figures, or
+// a page per budget (results/html/html_report.hpp), rebuilt by every report from its tables and
+// whatever figures/*.png hold; `--open` shows it.
 #include "results/html/html_report.hpp"
 #include "results/reporters/reporter.hpp"
 
@@ -7,11 +8,11 @@ namespace mhb {
 
 namespace {
 
-class HtmlPage final : public Reporter {
+class HtmlPages final : public Reporter {
 public:
     std::string_view name() const override { return "html"; }
     std::string_view description() const override {
-        return "index.html: every table and figure on one self-contained page";
+        return "index.html: the verdict, key figures, every table and figure (a page per budget)";
     }
     ReporterKind kind() const override { return ReporterKind::every_report; }
 
@@ -20,10 +21,9 @@ public:
             study.study.directory.string(), study.study.context_text, study.study.study_text, {}};
         for (const BudgetSection& budget : study.budgets)
             content.budgets.push_back({budget.budget, budget.folder, budget.directory, budget.tables,
-                                       budget.figures_note, budget.figures_current});
+                                       budget.verdict, budget.figures_note, budget.figures_current});
         const std::filesystem::path page = write_html_report(study.directory, content);
-        study.console << "HTML report (one self-contained page): " << page.string() << "\n  "
-                      << file_url(page) << '\n';
+        study.console << "HTML report (verdict first): " << page.string() << "\n  " << file_url(page) << '\n';
         return page;
     }
 };
@@ -31,7 +31,7 @@ public:
 } // namespace
 
 std::unique_ptr<Reporter> html_page_reporter() {
-    return std::make_unique<HtmlPage>();
+    return std::make_unique<HtmlPages>();
 }
 
 } // namespace mhb

@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "results/analysis/verdict.hpp"
 #include "results/exports/ioh_export.hpp"
 #include "results/protocols/suite_protocol.hpp"
 #include "results/store/study_data.hpp"
@@ -35,6 +36,9 @@ struct BudgetReportContext {
     const std::vector<const SuiteProtocol*>& protocols; // the protocols in force (protocol_registry.hpp)
     IohPrecision ioh_precision;                         // raw_y of the IOHprofiler export
     std::ostream& console;
+    const BudgetVerdict& verdict; // who won: what the console says instead of every table
+    bool console_tables = false;  // print every table on the console too (--tables)
+    std::size_t budget_count = 1; // the report's budgets: their verdicts share one screen
 };
 
 // One budget's part of the documents that hold the whole report (report.md, index.html, ...).
@@ -43,6 +47,8 @@ struct BudgetSection {
     std::string folder;              // its folder under the report's top one; empty: the flat layout
     std::filesystem::path directory; // that folder on disk
     std::vector<Table> tables;
+    // The verdict as tables (results/tables/verdict_tables.hpp): the page opens with it.
+    std::vector<Table> verdict;
     // What a reader must know about the figures (skipped, failed, interrupted, not drawn);
     // empty when they were drawn without trouble.
     std::string figures_note;

@@ -90,10 +90,13 @@ po::options_description report_options(ReportCommandLine& given) {
         "  - each table as Markdown, CSV and LaTeX (laid out to fit a journal's page; report.tex holds\n"
         "    them all and compiles with pdflatex and TeX Live's latex-base and latex-recommended);\n"
         "  - curve data (CSV) and figures (PDF/PNG/SVG, needs matplotlib: apt install python3-matplotlib);\n"
-        "  - index.html: one self-contained page (no network, no other file) with the study's context,\n"
-        "    every table (sortable by a click on a header) and every figure (inline SVG), a section per\n"
-        "    budget when there are several; rebuilt by every report. Its path is printed at the end.\n"
-        "The Markdown tables are also printed here.\n\nOptions");
+        "  - index.html: the verdict of each budget first, the key figures (convergence, final values),\n"
+        "    then every table (sortable by a click on a header) and figure (the PNG files, each linking\n"
+        "    to its PDF) and the study's context last; a page per budget (budget_<slug>.html) when there\n"
+        "    are several; no network, no other file outside the report. Its path is printed at the end.\n"
+        "Printed here: the verdict of each budget (per problem the algorithms ranked by median, each\n"
+        "against the best; across problems the mean ranks; the components of a factorial design), in\n"
+        "one screen; --tables prints every table in Markdown too.\n\nOptions");
     visible.add_options()("help,h", "this text")(
         "out", po::value(&given.out_dir),
         "report directory (default: DIR/report); never a study directory (refused: the report would "
@@ -106,6 +109,7 @@ po::options_description report_options(ReportCommandLine& given) {
                       "report drew, marked as such)")(
         "open", "print index.html's path and open it in a browser (xdg-open) when a display is available")(
         "quiet,q", "print nothing but warnings and errors (the report is written all the same)")(
+        "tables", "print every table in Markdown before the verdict (the files hold them either way)")(
         "format", po::value(&given.formats)->default_value(given.formats), format_option_help().c_str())(
         "ioh-precision", po::value(&given.ioh_precision)->default_value(given.ioh_precision),
         "raw_y in the IOHprofiler export (ioh/*.dat): ioh = %.10f, what IOHexperimenter writes (an error "
@@ -122,6 +126,7 @@ ReportOptions report_options_of(const ReportCommandLine& given, const po::variab
         options.reference = given.reference;
     options.alpha = given.alpha;
     options.figures = vm.count("no-figures") == 0;
+    options.console_tables = vm.count("tables") != 0;
     options.formats = parse_format_option(given.formats);
     options.plot_script = companion_file("scripts/plot_study.py");
     return options;

@@ -304,6 +304,7 @@ int build_study_report(const std::filesystem::path& dir, const po::variables_map
     ReportOptions report;
     report.formats = settings.formats;
     report.figures = !vm["no-figures"].as<bool>();
+    report.console_tables = vm["tables"].as<bool>();
     report.plot_script = companion_file("scripts/plot_study.py");
     report.stop = &stop_requested; // a Ctrl-C during the tables starts no figure
     std::ostringstream discarded;

@@ -61,7 +61,8 @@ po::options_description make_run_options() {
                                          "`mhbench report DIR` builds it at any time")
         ("no-figures", po::bool_switch(), "build the report without figures (they take most of its time)")
         ("format", po::value<std::string>()->default_value(default_format_option()), format_option_help().c_str())
-        ("quiet,q", po::bool_switch(), "print nothing but errors (no progress bar, no summary, no tables)");
+        ("tables", po::bool_switch(), "print every table of the report in Markdown before its verdict (the files hold them either way)")
+        ("quiet,q", po::bool_switch(), "print nothing but errors (no progress bar, no summary, no verdict)");
     // clang-format on
     po::options_description all;
     all.add(study_options()).add(run);

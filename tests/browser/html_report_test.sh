@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# The HTML report (report/index.html) in a real browser, Debian's headless Chromium: for a study
-# of the paper preset and a small ablation (a 2^2 design, two budgets: effects tables and figures),
-# the DOM holds one <table> per table of the report and one <svg> per figure file, with JavaScript
-# (the sort script ran: every table is marked js-sortable, and sorting a test table by a click
-# gives the expected orders) and without it (plain tables); and the page makes no network request
-# (Chromium's net log holds no request of the page's, a check shown to catch an <img> from
-# http://example.invalid). Exits 77 (CTest: skipped) when Chromium is not installed.
+# The HTML report (report/index.html and its budget pages) in a real browser, Debian's headless
+# Chromium: for a study of the paper preset and a small ablation (a 2^2 design, two budgets: a page
+# per budget, effects tables and figures), index.html opens with the verdict and ends with the
+# study's metadata; the pages' DOMs hold one <table> per table of the report (and the verdicts') and
+# one <img> per PNG figure, with JavaScript (the sort script ran: every table is marked js-sortable,
+# and sorting a test table by a click gives the expected orders) and without it (plain tables);
+# every image loads; and no page makes a network request or reads a file outside the report
+# (Chromium's net log, a check shown to catch an <img> from http://example.invalid).
+# Exits 77 (CTest: skipped) when Chromium is not installed.
 # Usage: html_report_test.sh MHBENCH   (ctest -L browser runs it; scripts/browser-check.sh too)
 set -euo pipefail
 
@@ -55,6 +57,7 @@ no_page_requests() { # NET_LOG PAGE_URL
     "$python" - "$1" "$2" <<'PY'
 import json, sys
 path, page = sys.argv[1], sys.argv[2]
+report = page.rsplit("/", 1)[0] + "/"  # the report's own files (its figures) may be read
 try:
     log = json.load(open(path))
 except ValueError as error:
@@ -66,7 +69,7 @@ for event in log["events"]:
     if names.get(event["type"]) != "URL_REQUEST_START_JOB" or "url" not in params:
         continue
     url = params["url"]
-    if url.split("#")[0] == page:
+    if url.split("#")[0] == page or (url.startswith(report) and ".." not in url):
         continue
     if params.get("initiator") == "not an origin" and "file://" not in params.get("network_isolation_key", ""):
         own.add(url.split("?")[0])
@@ -79,39 +82,98 @@ sys.exit(1 if requests else 0)
 PY
 }
 
-count() { grep -o -- "$1" "$2" | wc -l | tr -d ' '; }
+count() { { grep -o -- "$1" "$2" || true; } | wc -l | tr -d ' '; } # 0 when none (set -e, pipefail)
+
+# Every page of a report, index.html first.
+pages_of() { # REPORT_DIR
+    echo "$1/index.html"
+    find "$1" -maxdepth 1 -name 'budget_*.html' | sort
+}
 
 check_report() { # NAME STUDY_DIR
     local name="$1" report="$2/report"
     local page="$report/index.html" url="file://$2/report/index.html"
     [ -f "$page" ] || { fail "$name: $page was not written"; return; }
-    local tables figures
+    local tables figures verdicts=0 bytes=0 dom_tables=0 dom_images=0 page_file
     tables="$(find "$report" -name '*.md' ! -name report.md ! -name README.md | wc -l | tr -d ' ')"
-    figures="$(find "$report" -path '*/figures/*' -name '*.svg' ! -name '.*' | wc -l | tr -d ' ')"
-    echo "$name: $tables tables, $figures figures, $(wc -c <"$page" | tr -d ' ') bytes"
-    [ "$tables" -gt 0 ] || fail "$name: no table file in $report"
+    figures="$(find "$report" -path '*/figures/*' -name '*.png' ! -name '.*' | wc -l | tr -d ' ')"
     if "$python" -c "import matplotlib" 2>/dev/null; then
-        [ "$figures" -gt 0 ] || fail "$name: matplotlib is installed but no figures/*.svg was drawn"
+        [ "$figures" -gt 0 ] || fail "$name: matplotlib is installed but no figures/*.png was drawn"
     else
         echo "$name: no matplotlib, so no figures to check"
     fi
+    [ "$tables" -gt 0 ] || fail "$name: no table file in $report"
 
-    browse --dump-dom --log-net-log="$work/$name.net.json" --net-log-capture-mode=Default "$url" \
-        >"$work/$name.dom.html" || fail "$name: chromium failed (see its log below)"
-    local dom="$work/$name.dom.html"
-    [ "$(count '<table' "$dom")" = "$tables" ] || fail "$name (JavaScript on): $(count '<table' "$dom") <table> for $tables tables"
-    [ "$(count '<svg' "$dom")" = "$figures" ] || fail "$name (JavaScript on): $(count '<svg' "$dom") <svg> for $figures figures"
-    [ "$(count 'class="sortable js-sortable"' "$dom")" = "$tables" ] || fail "$name: the sort script did not mark every table"
-    grep -q 'aria-sort="none"' "$dom" || fail "$name: the sort script did not mark the headers"
-    no_page_requests "$work/$name.net.json" "$url" || fail "$name: the page made network requests"
+    local n=0
+    for page_file in $(pages_of "$report"); do
+        n=$((n + 1))
+        local size
+        size="$(wc -c <"$page_file" | tr -d ' ')"
+        bytes=$((bytes + size))
+        [ "$size" -lt 1048576 ] || fail "$name: $page_file is $size bytes (1 MB at most)"
+        verdicts=$((verdicts + $(count 'class="table" id="[^"]*v-verdict' "$page_file")))
+        browse --dump-dom --log-net-log="$work/$name.$n.net.json" --net-log-capture-mode=Default \
+            "file://$page_file" >"$work/$name.$n.dom.html" || fail "$name: chromium failed on $page_file"
+        local dom="$work/$name.$n.dom.html"
+        dom_tables=$((dom_tables + $(count '<table' "$dom")))
+        dom_images=$((dom_images + $(count '<img ' "$dom")))
+        [ "$(count '<table' "$dom")" = "$(count 'class="sortable js-sortable"' "$dom")" ] ||
+            fail "$name: the sort script did not mark every table of $page_file"
+        no_page_requests "$work/$name.$n.net.json" "file://$page_file" || fail "$name: $page_file made network requests"
+        browse_without_script "file://$page_file" >"$work/$name.$n.nojs.html" ||
+            fail "$name: chromium failed without JavaScript on $page_file"
+        [ "$(count '<table' "$work/$name.$n.nojs.html")" = "$(count '<table' "$dom")" ] ||
+            fail "$name (JavaScript off): the tables of $page_file differ"
+        [ "$(count 'class="sortable js-sortable"' "$work/$name.$n.nojs.html")" = 0 ] ||
+            fail "$name: the script ran with JavaScript off"
+    done
+    echo "$name: $tables tables, $figures figures, $n pages, $bytes bytes"
+    [ "$dom_tables" = "$((tables + verdicts))" ] ||
+        fail "$name: $dom_tables <table> for $tables tables and $verdicts verdict tables"
+    [ "$verdicts" -gt 0 ] || fail "$name: no verdict table"
+    # Each key figure (convergence, final values) is on index.html and on its budget's page, when there
+    # are budget pages; every figure once otherwise.
+    local expected="$figures"
+    if [ "$n" -gt 1 ]; then
+        expected=$((figures + $(find "$report" -path '*/figures/*' \( -name 'convergence_*.png' -o -name 'final_values_*.png' \) ! -name '.*' | wc -l)))
+    fi
+    [ "$dom_images" = "$expected" ] || fail "$name: $dom_images <img> for $expected figures to show"
+    grep -q 'aria-sort="none"' "$work/$name.1.dom.html" || fail "$name: the sort script did not mark the headers"
 
-    browse_without_script "$url" >"$work/$name.nojs.html" ||
-        fail "$name: chromium failed without JavaScript"
-    dom="$work/$name.nojs.html"
-    [ "$(count '<table' "$dom")" = "$tables" ] || fail "$name (JavaScript off): $(count '<table' "$dom") <table> for $tables tables"
-    [ "$(count '<svg' "$dom")" = "$figures" ] || fail "$name (JavaScript off): $(count '<svg' "$dom") <svg> for $figures figures"
-    [ "$(count 'class="sortable js-sortable"' "$dom")" = 0 ] || fail "$name: the script ran with JavaScript off"
-    grep -q '<td' "$dom" || fail "$name (JavaScript off): no table cell"
+    # The verdict opens the page, before any other table and the contents; the metadata ends it.
+    "$python" - "$work/$name.1.dom.html" <<'PY' || fail "$name: the verdict is not at the top or the metadata not last"
+import re, sys
+dom = open(sys.argv[1]).read()
+main = dom[dom.index("<main>"):dom.index("</main>")]
+sections = re.findall(r'<section[^>]* id="([^"]+)"', main)
+first_table = main.index("<table")
+ok = sections and sections[0] == "verdict" and main.index('id="verdict"') < first_table
+ok = ok and main.index('id="verdict"') < main.index("<nav")
+top_level = [s for s in sections if s in ("verdict", "key-figures", "pages", "tables", "figures", "context")]
+ok = ok and top_level[-1] == "context"
+print("sections of index.html:", " ".join(top_level))
+sys.exit(0 if ok else 1)
+PY
+    # Every image of the pages loads (a broken one has naturalWidth 0 once the page is loaded).
+    if [ "$figures" -gt 0 ]; then
+        "$python" - "$page" "$work/$name.images.html" <<'PY'
+import sys
+page = open(sys.argv[1]).read()
+check = """<script>
+window.addEventListener("load", function () {
+  var broken = Array.prototype.filter.call(document.images, function (i) { i.loading = "eager"; return i.naturalWidth === 0; });
+  document.body.setAttribute("data-image-check", broken.length ? broken.map(function (i) { return i.src; }).join(" ") : "ok");
+});
+</script>"""
+open(sys.argv[2], "w").write(page.replace(' loading="lazy"', "").replace("</body>", check + "</body>", 1))
+PY
+        cp "$work/$name.images.html" "$report/.image-check.html"
+        browse --dump-dom --virtual-time-budget=10000 "file://$report/.image-check.html" >"$work/$name.images.dom.html" ||
+            fail "$name: chromium failed on the image check"
+        rm -f "$report/.image-check.html"
+        grep -q 'data-image-check="ok"' "$work/$name.images.dom.html" ||
+            fail "$name: images that do not load: $(grep -o 'data-image-check="[^"]*"' "$work/$name.images.dom.html" || echo '(the check did not run)')"
+    fi
 }
 
 # 1. Two real studies: the paper's preset (one budget) and a 2^2 ablation under two budgets.
@@ -130,7 +192,8 @@ paper_study=$!
 ablation_study=$!
 wait "$paper_study" || { echo "FAIL: mhbench run --study paper failed" >&2; exit 1; }
 wait "$ablation_study" || { echo "FAIL: mhbench run of the ablation study failed" >&2; exit 1; }
-grep -q 'Effect of each component' "$work/ablation/report/index.html" || fail "ablation: no effects table on the page"
+grep -q 'Effect of each component' "$work/ablation/report/"budget_*.html || fail "ablation: no effects table on a page"
+grep -q 'Verdict on each component' "$work/ablation/report/index.html" || fail "ablation: no verdict on the components"
 check_report paper "$work/paper"
 check_report ablation "$work/ablation"
 

@@ -79,9 +79,9 @@ std::size_t line_count(const std::string& text) {
     return lines;
 }
 
-TEST(ReportCli, WritesTheTablesAndPrintsThemInMarkdown) {
+TEST(ReportCli, WritesTheTablesAndWithTablesPrintsThemInMarkdown) {
     const fs::path dir = small_study_dir("ok");
-    const Outcome o = run_report_cli("report '" + dir.string() + "' --no-figures");
+    const Outcome o = run_report_cli("report '" + dir.string() + "' --no-figures --tables");
     EXPECT_EQ(o.exit_code, 0) << o.err;
     EXPECT_NE(o.out.find("### Table 2: Fitness of different algorithms"), std::string::npos) << o.out;
     EXPECT_NE(o.out.find("| itlbo | 3/3 |"), std::string::npos) << o.out;
@@ -101,7 +101,7 @@ TEST(ReportCli, QuietWritesTheReportAndPrintsNothing) {
 
 TEST(ReportCli, SeveralBudgetsEachInItsOwnFolderWithLabels) {
     const fs::path dir = small_study_dir("budgets", {"iterations=1", "evaluations=100"});
-    const Outcome o = run_report_cli("report '" + dir.string() + "' --no-figures");
+    const Outcome o = run_report_cli("report '" + dir.string() + "' --no-figures --tables");
     EXPECT_EQ(o.exit_code, 0) << o.err;
     EXPECT_NE(o.out.find("2 budgets, each reported in its own folder"), std::string::npos) << o.out;
     EXPECT_NE(o.out.find("### Table 2: Fitness of different algorithms (pmsm:load=2,speed=2500) [budget "

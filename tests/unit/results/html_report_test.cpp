@@ -1,6 +1,7 @@
-// The HTML report (index.html): every table and caption, escaped; the figures' SVG files inlined
-// with their prolog dropped and ids unique on the page; nothing that would load from outside the
-// page; the same bytes when written twice; and a clear note where figures are missing.
+// The HTML report (index.html and a page per budget): the verdict first and the study's metadata
+// last; every table and caption, escaped; the figures as PNG images linking their PDF, the key ones
+// first; nothing that would load from outside the report; pages that link each other and stay small;
+// the same bytes when written twice; and a clear note where figures are missing.
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -37,24 +38,6 @@ std::vector<std::string> values_after(const std::string& text, const std::string
     return values;
 }
 
-// A matplotlib-like SVG: prolog, DOCTYPE, metadata, and the ids matplotlib gives every figure.
-std::string figure_svg(const std::string& title) {
-    return "<?xml version=\"1.0\" encoding=\"utf-8\" standalone=\"no\"?>\n"
-           "<!DOCTYPE svg PUBLIC \"-//W3C//DTD SVG 1.1//EN\"\n"
-           "  \"http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd\">\n"
-           "<svg xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"100pt\" height=\"50pt\" "
-           "viewBox=\"0 0 100 50\" xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\">\n <title>" +
-           title +
-           "</title>\n <metadata><rdf:RDF xmlns:dc=\"http://purl.org/dc/elements/1.1/\"/></metadata>\n"
-           " <g id=\"figure_1\"><g id=\"axes_1\">\n"
-           "  <path d=\"M 0 0 L 9 9\" clip-path=\"url(#p3c2b)\"/>\n"
-           "  <use xlink:href=\"#m5e1\" x=\"1\" y=\"2\"/>\n"
-           " </g></g>\n"
-           " <defs><clipPath id=\"p3c2b\"><rect width=\"9\"/></clipPath><path id=\"m5e1\" d=\"M 0 "
-           "0\"/></defs>\n"
-           "</svg>\n";
-}
-
 using mhb::test_support::cell;
 
 Table table(const std::string& id, const std::string& title, const std::string& caption) {
@@ -73,10 +56,11 @@ protected:
     void SetUp() override {
         dir_ = test_support::fresh_temporary_path("mhb_html_report_", "page");
         fs::create_directories(dir_ / "figures");
-        write_file(dir_ / "figures" / "convergence_iteration_sphere_dim_2.svg", figure_svg("conv"));
-        write_file(dir_ / "figures" / "final_values_sphere_dim_2.svg", figure_svg("final"));
-        write_file(dir_ / "figures" / "final_values_sphere_dim_2.png", "not inlined");
-        write_file(dir_ / "figures" / ".final_values_sphere_dim_2.svg.tmp-123", "a drawing in progress");
+        for (const char* name :
+             {"convergence_iteration_sphere_dim_2", "final_values_sphere_dim_2", "ecdf_targets_sphere_dim_2"})
+            write_file(dir_ / "figures" / (std::string(name) + ".png"), "a PNG");
+        write_file(dir_ / "figures" / "final_values_sphere_dim_2.svg", "<svg>not shown</svg>");
+        write_file(dir_ / "figures" / ".final_values_sphere_dim_2.png.tmp-123", "a drawing in progress");
 
         content_.study = "/studies/<mine> & \"yours\"";
         content_.context_text = "version = 0.1.0\ngit_commit = abc123\ncompiler = GNU <12>\nthreads = 2\n"
@@ -88,6 +72,7 @@ protected:
         section.tables = {table("summary", "Summary <of> runs [budget iterations=150]",
                                 "Median & IQR; 5 runs \"each\" < 6. Budget: iterations=150."),
                           table("tests", "Tests", "Wilcoxon rank-sum, Holm, alpha = 0.05 > 0.01.")};
+        section.verdict = {table("verdict", "Verdict per problem", "Ranked by median.")};
         content_.budgets = {section};
     }
     static void write_file(const fs::path& path, const std::string& text) {
@@ -101,7 +86,7 @@ protected:
 TEST_F(HtmlReport, HoldsEveryTableAndEveryCaptionEscaped) {
     const std::string page = render_html_report(content_);
     EXPECT_EQ(page.rfind("<!DOCTYPE html>\n", 0), 0u);
-    EXPECT_EQ(count(page, "<table"), 2u);
+    EXPECT_EQ(count(page, "<table"), 3u); // the verdict and both tables
     for (const auto& t : content_.budgets[0].tables) {
         EXPECT_NE(page.find(html_escape(t.caption)), std::string::npos) << t.caption;
         EXPECT_NE(page.find(html_escape(t.title)), std::string::npos) << t.title;
@@ -121,46 +106,70 @@ TEST_F(HtmlReport, HoldsEveryTableAndEveryCaptionEscaped) {
     EXPECT_NE(page.find("<a href=\"#t-tests\">Tests</a>"), std::string::npos);
 }
 
-TEST_F(HtmlReport, InlinesEverySvgFigureWithoutPrologAndWithIdsUniqueOnThePage) {
+TEST_F(HtmlReport, OpensWithTheVerdictAndEndsWithTheStudysMetadata) {
     const std::string page = render_html_report(content_);
-    EXPECT_EQ(count(page, "<svg"), 2u); // the two .svg files; not the PNG, not the temporary file
-    EXPECT_EQ(page.find("<?xml"), std::string::npos);
-    EXPECT_EQ(page.find("<!DOCTYPE svg"), std::string::npos);
-    EXPECT_EQ(page.find("<metadata"), std::string::npos);
+    const std::size_t verdict = page.find("<section id=\"verdict\">");
+    ASSERT_NE(verdict, std::string::npos);
+    EXPECT_LT(page.find("<main>"), verdict);
+    EXPECT_LT(verdict, page.find("<nav class=\"toc\""));
+    EXPECT_LT(verdict, page.find("<section id=\"key-figures\">"));
+    EXPECT_LT(page.find("<section id=\"key-figures\">"), page.find("id=\"t-summary\""));
+    const std::size_t context = page.find("<section id=\"context\">");
+    EXPECT_GT(context, page.find("id=\"t-tests\""));
+    EXPECT_GT(context, page.find("<section id=\"figures\">"));
+    EXPECT_LT(context, page.find("</main>"));
+    EXPECT_GT(page.find("problems = sphere:dim=2"), context); // study.ini within the metadata
+}
+
+TEST_F(HtmlReport, ShowsEachPngFigureAsAnImageLinkingItsPdfKeyFiguresFirst) {
+    const std::string page = render_html_report(content_);
+    EXPECT_EQ(count(page, "<img "), 3u); // the PNG files; not the SVG, not the temporary file
+    EXPECT_EQ(count(page, "<svg"), 0u);
     EXPECT_EQ(page.find("drawing in progress"), std::string::npos);
-    EXPECT_NE(page.find("<title>conv</title>"), std::string::npos);
-    EXPECT_NE(page.find("<title>final</title>"), std::string::npos);
-    EXPECT_LT(page.find("Convergence by iteration</h3>"), page.find("Final values</h3>"));
+    EXPECT_NE(page.find("<a href=\"figures/final_values_sphere_dim_2.pdf\"><img "
+                        "src=\"figures/final_values_sphere_dim_2.png\" loading=\"lazy\""),
+              std::string::npos);
+    // The key figures under "Key figures", the others under their kind below.
+    const std::size_t key = page.find("<section id=\"key-figures\">");
+    EXPECT_GT(page.find("src=\"figures/convergence_iteration_sphere_dim_2.png\""), key);
+    EXPECT_LT(page.find("src=\"figures/convergence_iteration_sphere_dim_2.png\""),
+              page.find("id=\"t-summary\""));
+    EXPECT_GT(page.find("src=\"figures/ecdf_targets_sphere_dim_2.png\""),
+              page.find("Fixed-target ECDFs</h3>"));
 
     std::multiset<std::string> ids;
     for (const auto& id : values_after(page, " id=\"", '"'))
         ids.insert(id);
     for (const auto& id : ids)
         EXPECT_EQ(ids.count(id), 1u) << "id \"" << id << "\" is not unique";
-    EXPECT_EQ(ids.count("figure_1"), 0u);
-    // Both figures had clip path "p3c2b": each now points to its own.
-    const auto urls = values_after(page, "url(#", ')');
-    ASSERT_EQ(urls.size(), 2u);
-    EXPECT_NE(urls[0], urls[1]);
-    for (const auto& target : urls)
-        EXPECT_EQ(ids.count(target), 1u) << "url(#" << target << ") points to no id";
     for (const auto& href : values_after(page, "href=\"", '"')) {
         ASSERT_FALSE(href.empty());
-        ASSERT_EQ(href[0], '#') << href;
-        EXPECT_EQ(ids.count(href.substr(1)), 1u) << "href=\"" << href << "\" points to no id";
+        if (href[0] == '#')
+            EXPECT_EQ(ids.count(href.substr(1)), 1u) << "href=\"" << href << "\" points to no id";
+        else
+            EXPECT_EQ(href.rfind("figures/", 0), 0u) << href;
     }
 }
 
-TEST_F(HtmlReport, LoadsNothingFromOutsideThePage) {
+TEST_F(HtmlReport, LoadsNothingFromOutsideTheReport) {
     const std::string page = render_html_report(content_);
     EXPECT_EQ(page.find("http://"), std::string::npos);
     EXPECT_EQ(page.find("https://"), std::string::npos);
-    EXPECT_EQ(page.find("src="), std::string::npos);
+    for (const auto& src : values_after(page, "src=\"", '"'))
+        EXPECT_EQ(src.rfind("figures/", 0), 0u) << src;
     EXPECT_EQ(page.find("<link"), std::string::npos);
     EXPECT_EQ(page.find("@import"), std::string::npos);
-    for (const auto& href : values_after(page, "href=\"", '"'))
-        EXPECT_EQ(href.rfind('#', 0), 0u) << href;
-    EXPECT_NE(page.find("content=\"default-src 'none';"), std::string::npos);
+    EXPECT_NE(page.find("content=\"default-src 'none'; img-src 'self' file:;"), std::string::npos);
+}
+
+TEST_F(HtmlReport, ColoursTheAlgorithmsAsTheFiguresDo) {
+    write_file(
+        dir_ / "figures" / "styles.csv",
+        "algorithm,label,colour,marker,linestyle\ntlbo,tlbo,#ff7f0e,s,--\nitlbo,x,red;}</style>,o,-\n");
+    const std::string page = render_html_report(content_);
+    EXPECT_NE(page.find("<span class=\"swatch\" style=\"background:#ff7f0e\"></span>tlbo"),
+              std::string::npos);
+    EXPECT_EQ(page.find("red;}"), std::string::npos); // not a plain colour: left out
 }
 
 TEST_F(HtmlReport, IsTheSameBytesWhenWrittenTwice) {
@@ -178,61 +187,66 @@ TEST_F(HtmlReport, SaysWhyTheFiguresAreMissing) {
     content.budgets[0].directory = dir_ / "elsewhere"; // no figures/ folder
     content.budgets[0].figures_note = "figures skipped: no Python with matplotlib found";
     std::string page = render_html_report(content);
-    EXPECT_EQ(count(page, "<svg"), 0u);
-    EXPECT_NE(page.find("No figures in this report: figures skipped: no Python with matplotlib found."),
-              std::string::npos);
+    EXPECT_EQ(count(page, "<img "), 0u);
+    EXPECT_EQ(count(page, "No figures in this report: figures skipped: no Python with matplotlib found."),
+              1u);
     content.budgets[0].figures_note.clear();
     page = render_html_report(content);
-    EXPECT_NE(page.find("No figures in this report: figures/ holds no SVG file"), std::string::npos);
+    EXPECT_NE(page.find("No figures in this report: figures/ holds no PNG file"), std::string::npos);
 
     // --no-figures with figures of an earlier report: shown, and said to be earlier.
     content = content_;
     content.budgets[0].figures_note = "the figures were not drawn (--no-figures)";
     content.budgets[0].figures_current = false;
     page = render_html_report(content);
-    EXPECT_EQ(count(page, "<svg"), 2u);
+    EXPECT_EQ(count(page, "<img "), 3u);
     EXPECT_NE(page.find("The figures were not drawn (--no-figures)."), std::string::npos);
     EXPECT_NE(page.find("from an earlier report"), std::string::npos);
 }
 
-TEST_F(HtmlReport, NamesTheFiguresPastTheSizeLimitAndThoseThatCannotBeRead) {
-    HtmlReportContent content = content_;
-    content.max_inline_svg_bytes = figure_svg("conv").size(); // room for one
-    std::string page = render_html_report(content);
-    EXPECT_EQ(count(page, "<svg"), 1u);
-    EXPECT_NE(page.find("1 figure not inlined"), std::string::npos);
-    EXPECT_NE(page.find("final_values_sphere_dim_2"), std::string::npos);
-
-    write_file(dir_ / "figures" / "zz_broken.svg", "<?xml version=\"1.0\"?>\n<svg width=\"1\"");
-    page = render_html_report(content_);
-    EXPECT_EQ(count(page, "<svg"), 2u);
-    EXPECT_NE(page.find("figures/zz_broken.svg could not be inlined: no &lt;svg&gt; element"),
-              std::string::npos);
-}
-
-TEST_F(HtmlReport, GivesEachBudgetItsOwnSection) {
+TEST_F(HtmlReport, GivesEachBudgetAPageLinkedFromTheVerdict) {
     HtmlReportContent content = content_;
     content.budgets[0].folder = "iterations_150";
+    fs::create_directories(dir_ / "iterations_150");
+    fs::rename(dir_ / "figures", dir_ / "iterations_150" / "figures");
+    content.budgets[0].directory = dir_ / "iterations_150";
     HtmlBudgetSection second = content.budgets[0];
     second.budget = "evaluations=15050";
     second.folder = "evaluations_15050";
     second.directory = dir_ / "none";
     content.budgets.push_back(second);
-    const std::string page = render_html_report(content);
-    EXPECT_EQ(count(page, "<table"), 4u);
-    EXPECT_EQ(count(page, "<svg"), 2u);
-    EXPECT_NE(page.find("<section class=\"budget\" id=\"b-iterations_150\">"), std::string::npos);
-    EXPECT_NE(page.find("<section class=\"budget\" id=\"b-evaluations_15050\">"), std::string::npos);
-    EXPECT_NE(page.find("id=\"b-evaluations_15050-t-summary\""), std::string::npos);
-    EXPECT_NE(page.find("<h2>Budget evaluations=15050 (files in evaluations_15050/)</h2>"),
-              std::string::npos);
-    std::multiset<std::string> ids;
-    for (const auto& id : values_after(page, " id=\"", '"'))
-        ids.insert(id);
-    for (const auto& id : ids)
-        EXPECT_EQ(ids.count(id), 1u) << "id \"" << id << "\" is not unique";
-    for (const auto& href : values_after(page, "href=\"", '"'))
-        EXPECT_EQ(ids.count(href.substr(1)), 1u) << href;
+    write_file(dir_ / "budget_stale.html", "an earlier report's page");
+    write_html_report(dir_, content);
+    EXPECT_FALSE(fs::exists(dir_ / "budget_stale.html"));
+    const std::vector<HtmlPage> pages = render_html_pages(content);
+    ASSERT_EQ(pages.size(), 3u);
+    EXPECT_EQ(pages[1].file, "budget_iterations_150.html");
+    EXPECT_EQ(pages[2].file, "budget_evaluations_15050.html");
+    const std::string& index = pages[0].text;
+    EXPECT_EQ(count(index, "<table"), 2u); // the verdicts; the tables are on the budgets' pages
+    EXPECT_EQ(count(index, "id=\"b-iterations_150-verdict\""), 1u);
+    EXPECT_NE(index.find("<a href=\"budget_evaluations_15050.html\">"), std::string::npos);
+    EXPECT_NE(index.find("src=\"iterations_150/figures/final_values_sphere_dim_2.png\""), std::string::npos);
+    EXPECT_EQ(index.find("ecdf_targets"), std::string::npos); // not a key figure
+    EXPECT_EQ(count(pages[1].text, "<table"), 2u);
+    EXPECT_EQ(count(pages[1].text, "<img "), 3u);
+    EXPECT_NE(pages[1].text.find("<a href=\"index.html\">"), std::string::npos);
+    for (const auto& page : pages) {
+        std::multiset<std::string> ids;
+        for (const auto& id : values_after(page.text, " id=\"", '"'))
+            ids.insert(id);
+        for (const auto& id : ids)
+            EXPECT_EQ(ids.count(id), 1u) << page.file << ": id \"" << id << "\" is not unique";
+        for (const auto& href : values_after(page.text, "href=\"", '"')) {
+            if (href[0] == '#')
+                EXPECT_EQ(ids.count(href.substr(1)), 1u) << page.file << ": " << href;
+            else // another page, or a figure's PDF beside its PNG
+                EXPECT_TRUE(fs::exists(dir_ / href) || href.find("/figures/") != std::string::npos)
+                    << page.file << ": " << href;
+        }
+        for (const auto& src : values_after(page.text, "src=\"", '"'))
+            EXPECT_TRUE(fs::exists(dir_ / src)) << page.file << ": " << src;
+    }
 }
 
 TEST(HtmlReportUrl, IsAbsoluteAndPercentEncoded) {
@@ -281,12 +295,11 @@ TEST(HtmlReportOfAStudy, BuildReportWritesOnePageWithEveryTable) {
         const auto name = entry.path().filename();
         tables += entry.path().extension() == ".md" && name != "report.md" && name != "README.md" ? 1U : 0U;
     }
-    EXPECT_GE(tables, 3u); // summary, tests, comparison at least
-    EXPECT_EQ(count(page, "<table"), tables);
+    EXPECT_GE(tables, 3u);                        // summary, tests, comparison at least
+    EXPECT_EQ(count(page, "<table"), tables + 1); // and the verdict of its one problem
     EXPECT_NE(page.find("No figures in this report: the figures were not drawn (--no-figures)."),
               std::string::npos);
-    EXPECT_NE(console.str().find("HTML report (one self-contained page): " + outcome.html.string()),
-              std::string::npos);
+    EXPECT_NE(console.str().find("HTML report (verdict first): " + outcome.html.string()), std::string::npos);
     EXPECT_NE(console.str().find(file_url(outcome.html)), std::string::npos);
     // Rebuilt by every report, to the same bytes.
     std::ostringstream again;

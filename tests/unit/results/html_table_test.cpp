@@ -80,8 +80,28 @@ TEST(HtmlTable, FooterRowsAreATfootAfterTheBody) {
     ASSERT_NE(body_end, std::string::npos);
     ASSERT_NE(foot, std::string::npos);
     EXPECT_LT(body_end, foot);
-    EXPECT_NE(html.find("1/1/1</td></tr>\n</tfoot>"), std::string::npos);
+    // The footer follows the columns' order on the page: Result right after Problem.
+    EXPECT_NE(html.find("w/t/l</td><td class=\"l\">1/1/1</td>"), std::string::npos);
     EXPECT_EQ(render_html_table(sample_table(), "t-tests", 3).find("<tfoot>"), std::string::npos);
+}
+
+TEST(HtmlTable, ShowsTheDecisiveColumnsAfterTheKeysAndColoursAlgorithms) {
+    EXPECT_EQ(html_column_order({"Problem", "Algorithm", "W", "p", "p (Holm)", "A12", "Result", "Result by"}),
+              (std::vector<std::size_t>{0, 1, 4, 6, 2, 3, 5, 7}));
+    EXPECT_EQ(html_column_order({"Mean", "Reading"}), (std::vector<std::size_t>{1, 0}));
+    const std::string html = render_html_table(sample_table(), "t", 3);
+    EXPECT_NE(
+        html.find("<th scope=\"col\" class=\"l\">Problem</th><th scope=\"col\" class=\"l\">Result</th>"),
+        std::string::npos);
+    Table t;
+    t.header = {"Algorithm", "Mean"};
+    t.add_row({text_cell("pso"), number_cell(1.0)});
+    t.add_row({text_cell("tlbo"), number_cell(2.0)});
+    const std::string coloured = render_html_table(t, "c", 3, {{"pso", "#2ca02c"}});
+    EXPECT_NE(
+        coloured.find("<td class=\"l\"><span class=\"swatch\" style=\"background:#2ca02c\"></span>pso</td>"),
+        std::string::npos);
+    EXPECT_NE(coloured.find("<td class=\"l\">tlbo</td>"), std::string::npos);
 }
 
 } // namespace

@@ -109,7 +109,9 @@ protected:
     static void SetUpTestSuite() {
         study_dir_ = make_study("fixed");
         std::ostringstream console;
-        build_report(load_study(study_dir_), no_figures(), console);
+        ReportOptions options = no_figures();
+        options.console_tables = true; // --tables: the console shows every table too
+        build_report(load_study(study_dir_), options, console);
         console_ = console.str();
     }
     static fs::path study_dir_;

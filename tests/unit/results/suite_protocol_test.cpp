@@ -119,6 +119,7 @@ TEST(SuiteProtocolReport, TheReportOfAStudyFollowingItAddsItsTable) {
     }
     ReportOptions options;
     options.figures = false;
+    options.console_tables = true; // --tables: its table on the console too
     std::ostringstream console;
     (void)build_report(load_study(dir), options, console);
     const std::string table = read_text(dir / "report" / "tiny_runs.md");
