@@ -126,8 +126,9 @@ void fitness_latex_layout(Table& t, bool paper) {
 std::string fitness_note(const StudyIndex& index, const PmsmProblem& p, bool cite_paper) {
     return "Final fitness over " + runs_note(index, p.spec) +
            " (mean, sample std); lowest mean in bold; f* the exact least-squares optimum." +
-           (cite_paper && p.published != nullptr ? " Paper: " + std::string(p.published->table) + " of Li, Wang, Ji (2017)."
-                                   : std::string());
+           (cite_paper && p.published != nullptr
+                ? " Paper: " + std::string(p.published->table) + " of Li, Wang, Ji (2017)."
+                : std::string());
 }
 
 Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
