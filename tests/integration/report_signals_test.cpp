@@ -159,7 +159,8 @@ TEST(ReportSignals, KillingTheReportKillsThePlottingScript) {
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
     EXPECT_TRUE(wait_until([&] { return processes_with(marker).empty(); }, 5.0))
         << "the plotting script outlived the report";
-    EXPECT_TRUE(fs::exists(dir / "report" / "fitness_pmsm_load_2_speed_2500.md")); // written before the figures
+    EXPECT_TRUE(
+        fs::exists(dir / "report" / "fitness_pmsm_load_2_speed_2500.md")); // written before the figures
     EXPECT_EQ(temporary_files(dir / "report"), std::vector<std::string>{});
 }
 
