@@ -146,7 +146,8 @@ void register_cmaes(AlgorithmRegistry& registry) {
                  throw std::invalid_argument("cmaes: parameter 'lambda' = 1 is too small: give 0 (default) "
                                              "or at least 2 (mu = lambda / 2 parents)");
              return std::make_unique<CmaEs>(lambda, p.real("sigma0"), restarts_from(p.text("restarts")));
-         }});
+         }},
+        {"CMA-ES", "restarts", {{"ipop", "CMA-ES (IPOP)"}, {"bipop", "CMA-ES (BIPOP)"}, {"none", "CMA-ES"}}});
 }
 
 } // namespace mhb

@@ -109,7 +109,8 @@ void register_de(AlgorithmRegistry& registry) {
                                              " is too small: DE/rand/1 needs the target and three other "
                                              "members (0 or at least 4)");
              return std::make_unique<DifferentialEvolution>(np, p.real("F"), p.real("CR"));
-         }});
+         }},
+        {"DE"});
 }
 
 } // namespace mhb

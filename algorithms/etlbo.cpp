@@ -149,7 +149,8 @@ void register_etlbo(AlgorithmRegistry& registry) {
                      "etlbo: parameter 'elite' = " + std::to_string(p.integer("elite")) +
                      " must be smaller than 'np' = " + std::to_string(p.integer("np")));
              return std::make_unique<Etlbo>(p.integer("np"), p.integer("elite"));
-         }});
+         }},
+        {"ETLBO"});
 }
 
 } // namespace mhb

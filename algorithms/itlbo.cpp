@@ -255,7 +255,8 @@ void register_itlbo(AlgorithmRegistry& registry) {
              s.obl_population_bounds = p.text("obl_bounds") == "population";
              s.r_mode = detail::learning_factor_from(p.text("r"));
              return std::make_unique<Itlbo>(s);
-         }});
+         }},
+        {"ITLBO"});
 }
 
 } // namespace mhb

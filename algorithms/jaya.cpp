@@ -80,7 +80,8 @@ void register_jaya(AlgorithmRegistry& registry) {
          {ParameterInfo::integer("np", 50, 2, 1000000, "population size (50: the ITLBO paper's NP)")},
          [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
              return std::make_unique<Jaya>(p.integer("np"));
-         }});
+         }},
+        {"Jaya"});
 }
 
 } // namespace mhb

@@ -317,7 +317,8 @@ void register_jso(AlgorithmRegistry& registry) {
              return std::make_unique<Jso>(JsoSettings{p.real("r_ninit"), p.integer("n_min"), p.real("r_arc"),
                                                       p.real("p"), p.integer("H"), p.real("m_f"),
                                                       p.real("m_cr")});
-         }});
+         }},
+        {"jSO"});
 }
 
 } // namespace mhb

@@ -231,7 +231,8 @@ void register_lshade(AlgorithmRegistry& registry) {
          [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
              return std::make_unique<Lshade>(LshadeSettings{p.real("r_ninit"), p.integer("n_min"),
                                                             p.real("r_arc"), p.real("p"), p.integer("H")});
-         }});
+         }},
+        {"L-SHADE"});
 }
 
 } // namespace mhb

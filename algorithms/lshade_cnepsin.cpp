@@ -485,7 +485,8 @@ void register_lshade_cnepsin(AlgorithmRegistry& registry) {
                  p.real("r_ninit"), p.integer("n_min"), p.real("r_arc"), p.real("p"), p.integer("H"),
                  p.real("m_f"), p.real("m_cr"), p.real("freq"), p.real("pc"), p.real("ps"), p.integer("LP"),
                  p.text("bounds") == "none" ? BoundPolicy::none : BoundPolicy::clamp});
-         }});
+         }},
+        {"LSHADE-cnEpSin"});
 }
 
 } // namespace mhb

@@ -452,7 +452,8 @@ void register_nl_shade_lbc(AlgorithmRegistry& registry) {
                  p.real("r_ninit"), p.integer("n_min"), p.real("r_arc"), p.real("r_h"), p.real("m_f"),
                  p.real("m_cr"), p.real("p_a"), p.real("p_b_start"), p.real("p_b_end"), p.real("lehmer_f"),
                  p.real("lehmer_cr"), p.real("lehmer_end"), p.real("lehmer_m"), p.integer("tries")});
-         }});
+         }},
+        {"NL-SHADE-LBC"});
 }
 
 } // namespace mhb

@@ -27,6 +27,7 @@
 #include <nlopt.hpp>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/algorithm_registry.hpp"
@@ -35,25 +36,42 @@
 namespace mhb {
 namespace {
 
-// The derivative-free NLopt algorithms that take box bounds and need no constraints.
-const std::vector<std::string>& global_algorithms() {
-    static const std::vector<std::string> names = {
-        "GN_CRS2_LM",       "GN_ISRES",           "GN_ESCH",
-        "GN_DIRECT",        "GN_DIRECT_L",        "GN_DIRECT_L_RAND",
-        "GN_DIRECT_NOSCAL", "GN_DIRECT_L_NOSCAL", "GN_DIRECT_L_RAND_NOSCAL",
-        "GN_MLSL",          "GN_MLSL_LDS"};
-    return names;
-}
-
-const std::vector<std::string>& local_algorithms() {
-    static const std::vector<std::string> names = {"LN_BOBYQA", "LN_NELDERMEAD", "LN_SBPLX",
-                                                   "LN_COBYLA", "LN_PRAXIS",     "LN_NEWUOA_BOUND"};
-    return names;
+// The derivative-free NLopt algorithms that take box bounds and need no constraints, each with
+// the short name a report gives it (the global methods first, then the local ones).
+const std::vector<std::pair<std::string, std::string>>& nlopt_methods() {
+    static const std::vector<std::pair<std::string, std::string>> methods = {
+        {"GN_CRS2_LM", "CRS2-LM"},
+        {"GN_ISRES", "ISRES"},
+        {"GN_ESCH", "ESCH"},
+        {"GN_DIRECT", "DIRECT"},
+        {"GN_DIRECT_L", "DIRECT-L"},
+        {"GN_DIRECT_L_RAND", "DIRECT-L (rand)"},
+        {"GN_DIRECT_NOSCAL", "DIRECT (noscal)"},
+        {"GN_DIRECT_L_NOSCAL", "DIRECT-L (noscal)"},
+        {"GN_DIRECT_L_RAND_NOSCAL", "DIRECT-L (rand, noscal)"},
+        {"GN_MLSL", "MLSL"},
+        {"GN_MLSL_LDS", "MLSL-LDS"},
+        {"LN_BOBYQA", "BOBYQA"},
+        {"LN_NELDERMEAD", "Nelder-Mead"},
+        {"LN_SBPLX", "Sbplx"},
+        {"LN_COBYLA", "COBYLA"},
+        {"LN_PRAXIS", "PRAXIS"},
+        {"LN_NEWUOA_BOUND", "NEWUOA"}};
+    return methods;
 }
 
 std::vector<std::string> all_algorithms() {
-    std::vector<std::string> names = global_algorithms();
-    names.insert(names.end(), local_algorithms().begin(), local_algorithms().end());
+    std::vector<std::string> names;
+    for (const auto& method : nlopt_methods())
+        names.push_back(method.first);
+    return names;
+}
+
+std::vector<std::string> local_algorithms() {
+    std::vector<std::string> names;
+    for (const auto& method : nlopt_methods())
+        if (method.first.rfind("LN_", 0) == 0)
+            names.push_back(method.first);
     return names;
 }
 
@@ -224,7 +242,8 @@ void register_nlopt(AlgorithmRegistry& registry) {
                                              " needs 'xtol_rel' or 'ftol_rel' > 0 to end a local search");
              to_algorithm(s.algorithm); // this NLopt build must know it
              return std::make_unique<NloptBaseline>(std::move(s));
-         }});
+         }},
+        {"NLopt", "algorithm", nlopt_methods()});
 }
 
 } // namespace mhb

@@ -172,7 +172,8 @@ void register_pso(AlgorithmRegistry& registry) {
              s.vmax = p.real("vmax");
              s.per_particle_r = p.text("r") == "learner";
              return std::make_unique<Pso>(s);
-         }});
+         }},
+        {"PSO"});
 }
 
 } // namespace mhb

@@ -71,7 +71,8 @@ void register_random_search(AlgorithmRegistry& registry) {
                                  "evaluations per iteration (default 50 = the paper's population size)")},
          [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
              return std::make_unique<RandomSearch>(p.integer("batch"));
-         }});
+         }},
+        {"Random search"});
 }
 
 } // namespace mhb

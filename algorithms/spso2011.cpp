@@ -152,7 +152,8 @@ void register_spso2011(AlgorithmRegistry& registry) {
                               "acceleration coefficient (SPSO 2011: 1/2 + ln 2)")},
          [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
              return std::make_unique<Spso2011>(p.integer("S"), p.integer("K"), p.real("w"), p.real("c"));
-         }});
+         }},
+        {"SPSO 2011"});
 }
 
 } // namespace mhb

@@ -118,7 +118,8 @@ void register_tlbo(AlgorithmRegistry& registry) {
          [](const ParameterValues& p) -> std::unique_ptr<Optimizer> {
              return std::make_unique<Tlbo>(static_cast<Eigen::Index>(p.integer("np")),
                                            detail::learning_factor_from(p.text("r")));
-         }});
+         }},
+        {"TLBO"});
 }
 
 } // namespace mhb

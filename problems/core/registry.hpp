@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "problems/core/parameters.hpp"
@@ -21,6 +22,16 @@ namespace mhb {
 // names known when none is near (problems/core/did_you_mean.hpp).
 std::invalid_argument unknown_name(const std::string& kind, std::string_view name,
                                    const std::vector<std::string>& known);
+
+// How reports name a component whose spec gives no `label=` (runner/study/default_label.cpp): a
+// short display name, "PSO". An entry whose one parameter picks the method itself (nlopt's
+// `algorithm`, cmaes's `restarts`) names each value instead: LN_BOBYQA -> "BOBYQA"; that parameter
+// then joins no suffix of non-default parameters. Declared once, in the entry's registration.
+struct DisplayName {
+    std::string name; // "" for the entry's name
+    std::string parameter{};
+    std::vector<std::pair<std::string, std::string>> by_value{}; // value (normal form) -> display name
+};
 
 template <class Product> class Registry {
 public:
@@ -42,12 +53,15 @@ public:
         // joins the identity of every run of the entry, as a data file's does.
         std::string module_path{};
         std::string module_sha256{};
+        DisplayName display{}; // add()'s second argument
     };
 
     // `kind` names what is registered ("algorithm", "problem") in error messages.
     explicit Registry(std::string kind) : kind_(std::move(kind)) {}
 
-    void add(Entry entry) {
+    void add(Entry entry, DisplayName display = {}) {
+        if (!display.name.empty() || !display.parameter.empty())
+            entry.display = std::move(display);
         for (const auto& e : entries_)
             if (e.name == entry.name)
                 throw std::logic_error(kind_ + " '" + entry.name + "' is registered twice");

@@ -45,6 +45,26 @@ std::vector<std::vector<std::size_t>> column_groups(const std::vector<Column>& c
     return groups;
 }
 
+// A last part holding one column beside the keys (in the comparison, one algorithm: a float of its
+// own) takes columns from the part before while both still fit and that one keeps more.
+void balance_last_part(const std::vector<Column>& columns, std::size_t keys, std::vector<Part>& parts) {
+    if (parts.size() < 2)
+        return;
+    Part& last = parts.back();
+    Part& before = parts[parts.size() - 2];
+    // Only columns of no group move (a group stays whole): the comparison's algorithms.
+    const auto loose = [&](const Part& part) { return columns[part.columns.back()].style.group.empty(); };
+    while (last.columns.size() - keys < 2 && before.columns.size() - keys > 2 && loose(last) &&
+           loose(before)) {
+        std::vector<std::size_t> moved = last.columns;
+        moved.insert(moved.begin() + static_cast<std::ptrdiff_t>(keys), before.columns.back());
+        if (cost(columns, moved) > usable_width)
+            return;
+        last.columns = std::move(moved);
+        before.columns.pop_back();
+    }
+}
+
 // The key columns and as many groups as fit, part by part; a group too wide on its own goes column
 // by column.
 std::vector<Part> parts_by_groups(const std::vector<Column>& columns) {
@@ -84,6 +104,7 @@ std::vector<Part> parts_by_groups(const std::vector<Column>& columns) {
         }
     }
     close();
+    balance_last_part(columns, keys.size(), parts);
     return parts;
 }
 

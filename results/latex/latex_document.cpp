@@ -78,6 +78,8 @@ std::string latex_document(const std::string& study_directory, const std::string
             out += "\\clearpage\n\\section{" + latex_escape(section.heading) + "}\n";
         // Every table is floats (a tall one several, its rows continued under the same number), so
         // none overtakes another still waiting for a place, and no \clearpage is needed between them.
+        if (const std::string methods = latex_methods(section.tables); !methods.empty())
+            out += "\n\\subsection*{Methods}\n" + methods;
         for (const auto& t : section.tables)
             out.append("\n").append(render_latex(t));
     }

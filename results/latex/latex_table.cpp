@@ -61,15 +61,18 @@ std::string caption_title(const Table& table) {
 
 // The notes under the first float of a table: the folded columns, the columns without any value,
 // the Markdown caption.
+// A table with a short note says it alone: the columns left out empty are no news to a reader of
+// the paper, and the method text is in methods.tex.
 std::string table_notes(const Table& table, const TableLayout& layout) {
     std::string notes = join(layout.folded, " ");
-    if (!layout.without_values.empty())
+    if (!layout.without_values.empty() && table.latex_note.empty())
         notes += std::string(notes.empty() ? "" : " ") +
                  "Columns without any value (left out): " + join(layout.without_values, ", ") + ".";
-    if (!table.caption.empty()) {
+    const std::string& said = table.latex_note.empty() ? table.caption : table.latex_note;
+    if (!said.empty()) {
         if (!notes.empty())
             notes += ' ';
-        notes += latex_prose(table.caption);
+        notes += latex_prose(said);
     }
     return notes;
 }
@@ -250,6 +253,24 @@ std::string render_latex(const Table& table) {
     for (std::size_t p = 0; p < layout.parts.size(); ++p)
         out += write_part(table, layout, p, title, notes);
     return out;
+}
+
+std::string latex_methods(const std::vector<Table>& tables) {
+    std::vector<std::string> said;
+    for (const auto& t : tables)
+        for (const auto& paragraph : t.methods)
+            if (std::find(said.begin(), said.end(), paragraph) == said.end())
+                said.push_back(paragraph);
+    if (said.empty())
+        return "";
+    std::string out =
+        "% The methods behind the tables' markers and tests (written by mhbench report), said once\n"
+        "% for every table: \\input it where the paper describes its statistics.\n";
+    // \sloppy: the narrow column of a two-column class has no room for the test names' long words.
+    out += "{\\sloppy\n";
+    for (const auto& text : said)
+        out += latex_prose(text) + "\\par\n";
+    return out + "}\n";
 }
 
 } // namespace mhb

@@ -30,15 +30,23 @@
 // columns line every decimal point up: siunitx is in Debian's texlive-science, which a reader (and
 // CI) may lack, and its S columns could not take our composite cells (median, IQR, marker).
 // The caption is the title alone (no "Table N:" of the Markdown title: LaTeX numbers the tables);
-// what the Markdown caption says follows the table as notes.
+// the notes under it are the table's short note (Table::latex_note, a few lines; the Markdown
+// caption where it has none) after the columns said once. The method text the tables share
+// (Table::methods: the tests, the markers, Holm, alpha) is said once for all in methods.tex
+// (latex_methods), which a paper \input's in its text.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "results/table_model/table.hpp" // a renderer sees tables, never runs
 
 namespace mhb {
 
 std::string render_latex(const Table& table);
+
+// methods.tex: each distinct Table::methods text of `tables` once, in their order, as paragraphs of
+// the paper's text (no float); "" when no table has one.
+std::string latex_methods(const std::vector<Table>& tables);
 
 } // namespace mhb

@@ -47,9 +47,9 @@ public:
     [[nodiscard]] virtual std::string_view name() const = 0;        // as `protocol =` writes it: "cec2017"
     [[nodiscard]] virtual std::string_view title() const = 0;       // "CEC 2017"
     [[nodiscard]] virtual std::string_view description() const = 0; // one line: what following it gives
-    // In force for every study, named or not: the paper's tables appear whenever a study has the
-    // paper's problems. Such a protocol cannot be named by `protocol =`, nor is it listed where
-    // the names are; returning false makes it one a study opts into by name.
+    // In force for every study, named or not (none of the built-ins is). Such a protocol cannot be
+    // named by `protocol =`, nor is it listed where the names are; returning false makes it one a
+    // study opts into by name.
     [[nodiscard]] virtual bool applies_unnamed() const { return false; }
 
     // The runner. Appends one line per reason the study cannot follow the protocol.
@@ -66,6 +66,10 @@ public:
     tables(const StudyIndex& /*index*/, const std::string& /*reference*/, double /*alpha*/) const {
         return {};
     }
+    // Whether its tables at this budget stand instead of the PMSM tables every study with PMSM
+    // problems gets (tables/paper_tables.hpp pmsm_tables): the paper's protocol frames the same
+    // tables as the paper's Tables 2-4.
+    [[nodiscard]] virtual bool replaces_pmsm_tables(const StudyIndex& /*index*/) const { return false; }
     // Its files: the folder of a budget's report directory that holds them ("cec"; "" when it
     // writes none). Protocols may share one: it is left alone while any protocol in force writes it.
     [[nodiscard]] virtual std::string_view files_folder() const { return {}; }

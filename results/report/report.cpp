@@ -22,6 +22,7 @@
 #include "results/table_model/table.hpp"
 #include "results/tables/comparison_tables.hpp"
 #include "results/tables/effects_table.hpp"
+#include "results/tables/paper_tables.hpp"
 #include "results/tables/relative_gap_table.hpp"
 #include "results/tables/verdict_tables.hpp"
 
@@ -70,6 +71,11 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
             "dropped), the full spec lists every parameter with its value, defaults included.";
         tables.push_back(std::move(t));
     }
+    // A PMSM problem's own tables, unless a protocol frames them (the paper's, at its budget).
+    if (std::none_of(protocols.begin(), protocols.end(),
+                     [&](const SuiteProtocol* p) { return p->replaces_pmsm_tables(index); }))
+        for (auto& t : pmsm_tables(index))
+            tables.push_back(std::move(t));
     for (auto& t : protocol_tables(protocols, ProtocolTablesPlace::before_comparisons, index,
                                    comparison.reference, comparison.alpha))
         tables.push_back(std::move(t));
@@ -87,6 +93,8 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
         for (auto& t : tables) {
             t.title += " [budget " + index.budget() + "]";
             t.caption += " Budget: " + index.budget() + ".";
+            if (!t.latex_note.empty())
+                t.latex_note += " Budget: " + index.budget() + ".";
         }
     return tables;
 }
@@ -182,8 +190,8 @@ void say_budget_summary(const StudyData& study, const std::string& budget, const
         console << "no factorial analysis of " << r.name << ": " << r.why_not << '\n';
 }
 
-// The protocols the study follows: the one study.ini names (`protocol = cec2017`), if this mhbench
-// knows it, and those in force unnamed (the paper's tables). They add tables and files.
+// The protocols the study follows: the one study.ini names (`protocol = cec2017`, `pmsm-paper`), if
+// this mhbench knows it, and those in force unnamed. They add tables and files.
 std::vector<const SuiteProtocol*> study_protocols(const StudyData& study, std::ostream& console) {
     const std::optional<std::string> protocol_name = study_protocol(study.study_text);
     if (protocol_name && find_protocol(*protocol_name) == nullptr)
@@ -243,6 +251,23 @@ std::vector<std::string> folders_of(const std::vector<BudgetSection>& sections) 
     return folders;
 }
 
+// PMSM tables an earlier report wrote under another name (the paper's Table 2 at another budget, or
+// a neutral table the paper's framing now replaces): stale copies would mislead.
+void remove_stale_pmsm_tables(const fs::path& dir, const std::vector<Table>& tables) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        const std::string stem = entry.path().stem().string();
+        const std::string extension = entry.path().extension().string();
+        const auto formats = table_format_names();
+        const bool table_file = extension.size() > 1 && std::find(formats.begin(), formats.end(),
+                                                                  extension.substr(1)) != formats.end();
+        const bool current =
+            std::any_of(tables.begin(), tables.end(), [&](const Table& t) { return t.id == stem; });
+        if (table_file && !current && is_pmsm_table_id(stem))
+            fs::remove(entry.path(), ec);
+    }
+}
+
 // The figures of the budget unless `figures` is false (set to false when they are interrupted),
 // and what the budget's section of the study-level documents (index.html) says about them.
 void draw_budget_figures(const ReportOptions& options, const fs::path& dir, std::ostream& console,
@@ -296,6 +321,7 @@ ReportFiles write_budget_tables(const StudyData& study, const std::string& budge
     ReportFiles files;
     files.formats.assign(options.formats.begin(), options.formats.end());
     write_curve_data(index, budget, dir, factorial.designs, gaps, options.alpha, files);
+    remove_stale_pmsm_tables(dir, tables);
     console << "tables and curve data: " << dir.string() << '\n';
     for (const Reporter* reporter : reporters)
         reporter->write_budget(context);

@@ -1,5 +1,5 @@
-// tex: each table as <id>.tex, and report.tex, one LaTeX document with every table of every budget
-// (results/latex/latex_document.hpp).
+// tex: each table as <id>.tex, the method text of their notes once in methods.tex, and report.tex,
+// one LaTeX document with every table of every budget (results/latex/latex_document.hpp).
 #include "results/latex/latex_document.hpp"
 #include "results/latex/latex_table.hpp"
 #include "results/reporters/reporter.hpp"
@@ -17,6 +17,16 @@ public:
     }
     bool selected_by_default() const override { return true; }
     std::string render(const Table& table) const override { return render_latex(table); }
+
+    // methods.tex: the method text the tables' short notes leave out, once for the budget's tables.
+    void write_budget(const BudgetReportContext& budget) const override {
+        const std::string methods = latex_methods(budget.tables);
+        std::error_code ec;
+        if (methods.empty())
+            std::filesystem::remove(budget.directory / "methods.tex", ec);
+        else
+            write_file_atomically(budget.directory / "methods.tex", methods);
+    }
 
     std::optional<std::filesystem::path> write_study(const StudyReportContext& study) const override {
         std::vector<LatexSection> sections; // a section per budget when there are several

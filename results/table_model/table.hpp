@@ -74,6 +74,11 @@ struct Table {
     // LaTeX: the second number of each cell on a line of its own under the first (a compact
     // "median over (IQR)" layout) instead of beside it.
     bool latex_spread_below = false;
+    // LaTeX: the notes under the table, a few lines a paper can keep ("": the caption, which Markdown
+    // may make long), and the method text several tables share (what a test is, what the markers
+    // mean, Holm, alpha), said once for all in methods.tex rather than under each table.
+    std::string latex_note{};
+    std::vector<std::string> methods{}; // paragraphs; a paragraph two tables share is said once
 
     void add_row(std::vector<TableCell> row);
     void add_footer(std::vector<TableCell> row);

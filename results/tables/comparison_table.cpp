@@ -98,20 +98,28 @@ const MarkerTestsWording comparison_tests_wording = {
     .unpaired_where = " on the others (seeds differ)",
     .none = "none (no problem has runs of the reference and another algorithm)"};
 
+std::string runs_range(const ComparisonRowsSeen& seen) {
+    return seen.least_runs == seen.most_runs || seen.least_runs == SIZE_MAX
+               ? std::to_string(seen.most_runs)
+               : std::to_string(seen.least_runs) + "-" + std::to_string(seen.most_runs);
+}
+
+// What the markers are, for methods.tex and the Markdown caption.
+std::string markers_paragraph(const StudyIndex& index, const std::vector<Comparison>& comparisons,
+                              const ComparisonOptions& options, const ComparisonRowsSeen& seen) {
+    return "Markers against the reference " + index.label(options.reference) + ": " +
+           marker_tests_text(seen.any_paired, seen.any_unpaired, comparison_tests_wording) +
+           " of the final values, Holm correction across each problem's comparisons, alpha = " +
+           alpha_text(options.alpha) + "; + better, - worse, = no significant difference." +
+           degenerate_tests_note(comparisons) + (comparisons.empty() ? "" : wtl_note);
+}
+
 std::string comparison_caption(const StudyIndex& index, const std::vector<Comparison>& comparisons,
                                const ComparisonOptions& options, const ComparisonRowsSeen& seen) {
-    const std::string runs = seen.least_runs == seen.most_runs || seen.least_runs == SIZE_MAX
-                                 ? std::to_string(seen.most_runs)
-                                 : std::to_string(seen.least_runs) + "-" + std::to_string(seen.most_runs);
-    return "Median (IQR = q75 - q25) of the final best-so-far value over " + runs +
+    return "Median (IQR = q75 - q25) of the final best-so-far value over " + runs_range(seen) +
            " runs; lowest median in bold. The median is shown because the markers come from rank tests "
-           "of the final values, which compare where the runs lie, not their mean. Markers against the "
-           "reference " +
-           index.label(options.reference) + ": " +
-           marker_tests_text(seen.any_paired, seen.any_unpaired, comparison_tests_wording) +
-           ", Holm correction across each problem's comparisons, alpha = " + alpha_text(options.alpha) +
-           "; + better, - worse, = no significant difference." + degenerate_tests_note(comparisons) +
-           (comparisons.empty() ? "" : wtl_note) + left_out_notes(index);
+           "of the final values, which compare where the runs lie, not their mean. " +
+           markers_paragraph(index, comparisons, options, seen) + left_out_notes(index);
 }
 
 // LaTeX: the IQR under the median keeps the columns narrow; the test is said once when it is the
@@ -141,6 +149,10 @@ Table comparison_table(const StudyIndex& index, const std::vector<Comparison>& c
     if (!comparisons.empty())
         t.add_footer(win_tie_loss_footer(index, seen, t.header.size(), options.reference));
     t.caption = comparison_caption(index, comparisons, options, seen);
+    t.latex_note = "Median (IQR) of the final value over " + runs_range(seen) +
+                   " runs; lowest in bold. +, =, -: better than, not different from, worse than " +
+                   index.label(options.reference) + " (Methods)." + left_out_notes(index);
+    t.methods = {markers_paragraph(index, comparisons, options, seen)};
     comparison_latex_layout(t);
     format_columns(t);
     return t;

@@ -72,6 +72,40 @@ std::string runs_note(const StudyIndex& index, const std::string& problem) {
                          : std::to_string(least) + "-" + std::to_string(most) + " runs per algorithm";
 }
 
+std::string pmsm_problem_name(const std::string& spec) {
+    const SpecText text = split_spec_text(spec);
+    const auto value = [&](const std::string& key) {
+        const auto at = text.parameters.find(key);
+        return at == text.parameters.end() ? std::string() : at->second;
+    };
+    std::string name = "PMSM";
+    if (const std::string data = value("data"); !data.empty()) {
+        std::string files;
+        for (std::size_t start = 0; start <= data.size();) {
+            const std::size_t end = std::min(data.find('+', start), data.size());
+            const std::string path = data.substr(start, end - start);
+            files += (files.empty() ? " " : ", ") + path.substr(path.find_last_of('/') + 1);
+            start = end + 1;
+        }
+        name += ", logged data" + files;
+    } else if (const std::string conditions = value("conditions"); !conditions.empty()) {
+        name += ", conditions " + conditions;
+    } else {
+        // A condition left at its default is not said: the defaults are the problem's to declare.
+        if (const std::string speed = value("speed"); !speed.empty())
+            name += ", " + speed + " rpm";
+        if (const std::string load = value("load"); !load.empty())
+            name += ", " + load + " N m";
+    }
+    if (const std::string model = value("model"); !model.empty() && model != "steady")
+        name += ", " + std::string(model == "output" ? "output-error" : model) + " model";
+    if (const std::string motor = value("motor"); !motor.empty() && motor != "paper")
+        name += ", " + motor + " motor";
+    if (!value("noise_i").empty() || !value("noise_u").empty())
+        name += ", noisy";
+    return name;
+}
+
 std::string paper_source(const PmsmProblem& p) {
     return std::string(paper_citation) + (p.published ? ", " + std::string(p.published->table) : "");
 }

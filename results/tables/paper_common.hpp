@@ -14,16 +14,30 @@ namespace mhb::tables {
 
 inline constexpr const char* paper_citation = "Li, Wang, Ji (2017), J. System Simulation 29(2):393-401";
 
+// The budget the paper ran (section 4: NP = 50 for 150 iterations), as StudyIndex::budget() writes
+// it: only there are its tables framed as the paper's.
+inline constexpr const char* paper_budget = "iterations=150";
+
 // Where the paper's numbers appear, and what they were measured with.
 inline constexpr const char* paper_rows_note =
     "; shown only beside itlbo, tlbo and pso with every parameter at its default (the paper's settings), "
     "never beside a variant; the paper ran NP = 50 for 150 iterations, 20 runs";
 
+// A PMSM problem of the study as its tables name it. `published` is set only when the tables are
+// framed as the paper's (the pmsm-paper protocol at the paper's budget) and the paper ran its
+// condition: then its tables are the paper's Tables 2-3, beside the published values; otherwise
+// they are the study's own fitness and parameters tables, with no paper column.
 struct PmsmProblem {
     std::string spec;
-    const PublishedCondition* published = nullptr; // nullptr: a condition the paper did not run
-    std::string suffix;                            // "" for the paper's Table 2/3 condition
+    std::string name;                              // for titles: "PMSM, 2500 rpm, 2 N m" (pmsm_problem_name)
+    const PublishedCondition* published = nullptr; // nullptr: neutral tables
+    std::string suffix;                            // of the file names: "" for the first of its kind
 };
+
+// A PMSM problem's spec as a title names it, with no spec syntax: its condition ("PMSM, 2500 rpm,
+// 2 N m"), the model and motor when they are not the paper's, "noisy" with measurement noise, and
+// for logged data the files ("PMSM, logged data run1.csv").
+std::string pmsm_problem_name(const std::string& spec);
 
 // The paper's entries for this algorithm on this problem, if any: only for the configurations the
 // paper ran, i.e. the canonical spec exactly "itlbo", "tlbo" or "pso" (every parameter at its

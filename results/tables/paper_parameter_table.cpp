@@ -143,14 +143,20 @@ void add_parameter_error_rows(ParameterRows& rows, const StudyIndex& index, cons
         add_published_rows(rows, who, *published);
 }
 
+// What the rows are, said briefly (the LaTeX note).
+const char* parameter_note =
+    "Mean and sample std over runs of each run's best point; error % = 100 (mean - true) / "
+    "true; dev. % the same against the least-squares optimum theta*.";
+
 std::string parameter_caption(const StudyIndex& index, const PmsmProblem& p) {
-    return "Identified parameters over " + runs_note(index, p.spec) +
+    return "Problem: " + p.spec + ". Identified parameters over " + runs_note(index, p.spec) +
            ": mean and sample std of the best point of each run; error % = 100 (mean - true) / true. theta* "
            "is the exact least-squares (LS) optimum (what no optimiser can beat); deviation % (dev. %) = 100 "
            "(mean - theta*) / theta*, and Overall is the mean over runs of the RMS relative distance to "
-           "theta* "
-           "in %. Percentages to 3 decimals. Paper values: " +
-           paper_source(p) + " (its errors, paper err. %, are magnitudes)" + paper_rows_note + "." +
+           "theta* in %. Percentages to 3 decimals." +
+           (p.published != nullptr ? " Paper values: " + paper_source(p) +
+                                         " (its errors, paper err. %, are magnitudes)" + paper_rows_note + "."
+                                   : std::string()) +
            left_out_notes(index);
 }
 
@@ -161,8 +167,10 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
     const RunRecord& first = *index.find(p.spec, algorithms.front())->runs.front();
     const std::vector<std::string>& names = first.parameter_names;
     Table t;
-    t.id = "table3_parameters" + p.suffix;
-    t.title = "Table 3: Parameter identification results (" + p.spec + ")";
+    const bool paper = p.published != nullptr;
+    t.id = (paper ? "table3_parameters" : "parameters") + p.suffix;
+    t.title =
+        (paper ? "Table 3: Parameter identification results (" : "Identified parameters (") + p.name + ")";
     t.header = {"Algorithm", "Quantity"};
     for (const auto& n : names)
         t.header.push_back(n);
@@ -181,6 +189,7 @@ Table parameter_table(const StudyIndex& index, const PmsmProblem& p) {
     for (const auto& a : algorithms)
         add_parameter_error_rows(rows, index, p, a, first);
     t.caption = parameter_caption(index, p);
+    t.latex_note = parameter_note;
     t.latex_column(0).heading = true; // each algorithm heads its rows: a column less
     t.latex_column(1).key = true;
     for (std::size_t k = 0; k < names.size(); ++k)

@@ -24,7 +24,8 @@ std::string file_slug(const std::string& text) {
     return out;
 }
 
-std::vector<PmsmProblem> pmsm_problems(const StudyIndex& index) {
+// The study's PMSM problems; with `paper`, each matched to the condition of the paper it ran.
+std::vector<PmsmProblem> pmsm_problems(const StudyIndex& index, bool paper) {
     std::vector<PmsmProblem> out;
     for (const auto& p : index.problems()) {
         const SpecText spec = split_spec_text(p);
@@ -32,14 +33,18 @@ std::vector<PmsmProblem> pmsm_problems(const StudyIndex& index) {
             continue;
         PmsmProblem problem;
         problem.spec = p;
+        problem.name = pmsm_problem_name(p);
         const auto load = spec_number(spec, "load");
         const auto speed = spec_number(spec, "speed");
-        if (load && speed)
+        if (paper && load && speed)
             problem.published = find_published_condition(*load, *speed);
-        const bool main_condition = problem.published != nullptr && !problem.published->fitness.empty();
-        if (!main_condition)
-            problem.suffix.append("_").append(file_slug(p));
         out.push_back(problem);
+    }
+    // File names: the paper's Table 2/3 condition, or the only problem, has none; the others' name it.
+    for (auto& problem : out) {
+        const bool main_condition = problem.published != nullptr && !problem.published->fitness.empty();
+        if (!main_condition && !(out.size() == 1 && problem.published == nullptr))
+            problem.suffix.append("_").append(file_slug(problem.spec));
     }
     return out;
 }
@@ -74,12 +79,10 @@ std::vector<TableCell> fitness_row(const StudyIndex& index, const PmsmProblem& p
                                   fixed_cell(mean(run_evaluations(g)), 1), number_cell(s.mean, 4),
                                   number_cell(s.std, 3)};
     row[3].bold = std::isfinite(best_mean) && s.mean == best_mean;
-    if (const auto* f = published_fitness(p, algorithm)) {
-        row.push_back(fixed_cell(f->mean, decimals.mean));
-        row.push_back(fixed_cell(f->std, decimals.std));
-    } else {
-        row.push_back(empty_cell());
-        row.push_back(empty_cell());
+    if (p.published != nullptr) {
+        const auto* f = published_fitness(p, algorithm);
+        row.push_back(f != nullptr ? fixed_cell(f->mean, decimals.mean) : empty_cell());
+        row.push_back(f != nullptr ? fixed_cell(f->std, decimals.std) : empty_cell());
     }
     row.push_back(gaps.empty() ? empty_cell() : number_cell(mean(gaps), 4));
     row.push_back(optima.empty() ? empty_cell() : number_cell(mean(optima), 6));
@@ -100,30 +103,44 @@ void add_failed_fitness_rows(Table& t, const StudyIndex& index, const PmsmProble
     }
 }
 
-void fitness_latex_layout(Table& t) {
+// The columns after the runs: this study's, the paper's (when framed as the paper's), the optimum's.
+void fitness_latex_layout(Table& t, bool paper) {
+    const std::size_t optimum = paper ? 7 : 5;
     for (std::size_t c = 1; c <= 4; ++c)
         t.latex_column(c).group = "this study";
-    t.latex_column(5).group = "paper";
-    t.latex_column(6).group = "paper";
-    t.latex_column(7).group = "optimum";
-    t.latex_column(8).group = "optimum";
+    if (paper) {
+        t.latex_column(5).group = "paper";
+        t.latex_column(6).group = "paper";
+    }
+    t.latex_column(optimum).group = "optimum";
+    t.latex_column(optimum + 1).group = "optimum";
     t.latex_column(1).fold_constant = true; // "20/20" on every row, typically
-    set_latex_headers(t, {{2, "Evals.\\\\(mean)"},
-                          {3, "Mean $f$"},
-                          {4, "Std $f$"},
-                          {5, "Paper\\\\mean"},
-                          {6, "Paper\\\\std"},
-                          {7, "Mean gap\\\\$f - f^*$"},
-                          {8, "$f^*$"}});
-    t.latex_column(8).fold_constant = true;
+    set_latex_headers(t, {{2, "Evals.\\\\(mean)"}, {3, "Mean $f$"}, {4, "Std $f$"}});
+    if (paper)
+        set_latex_headers(t, {{5, "Paper\\\\mean"}, {6, "Paper\\\\std"}});
+    set_latex_headers(t, {{optimum, "Mean gap\\\\$f - f^*$"}, {optimum + 1, "$f^*$"}});
+    t.latex_column(optimum + 1).fold_constant = true;
+}
+
+// What the rows are, said briefly (the LaTeX note); the full caption adds the paper's source.
+std::string fitness_note(const StudyIndex& index, const PmsmProblem& p, bool cite_paper) {
+    return "Final fitness over " + runs_note(index, p.spec) +
+           " (mean, sample std); lowest mean in bold; f* the exact least-squares optimum." +
+           (cite_paper && p.published != nullptr
+                ? " Paper: " + std::string(p.published->table) + " of Li, Wang, Ji (2017)."
+                : std::string());
 }
 
 Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
+    const bool paper = p.published != nullptr;
     Table t;
-    t.id = "table2_fitness" + p.suffix;
-    t.title = "Table 2: Fitness of different algorithms (" + p.spec + ")";
-    t.header = {"Algorithm",  "Runs",      "Evaluations (mean)", "Mean f", "Std f",
-                "Paper mean", "Paper std", "Mean gap f - f*",    "f*"};
+    t.id = (paper ? "table2_fitness" : "fitness") + p.suffix;
+    t.title =
+        (paper ? "Table 2: Fitness of different algorithms (" : "Fitness of each algorithm (") + p.name + ")";
+    t.header = {"Algorithm", "Runs", "Evaluations (mean)", "Mean f", "Std f"};
+    if (paper)
+        t.header.insert(t.header.end(), {"Paper mean", "Paper std"});
+    t.header.insert(t.header.end(), {"Mean gap f - f*", "f*"});
     const auto algorithms = index.algorithms_on(p.spec);
     const FitnessDecimals decimals = paper_fitness_decimals(p);
     double best_mean = INFINITY;
@@ -132,11 +149,12 @@ Table fitness_table(const StudyIndex& index, const PmsmProblem& p) {
     for (const auto& a : algorithms)
         t.add_row(fitness_row(index, p, a, best_mean, decimals));
     add_failed_fitness_rows(t, index, p);
-    t.caption = "Final best fitness over " + runs_note(index, p.spec) +
-                " (mean, sample std); lowest mean in bold. f* is the exact least-squares optimum of the "
-                "problem; the gap f - f* is what an optimiser could still gain. Paper values: " +
-                paper_source(p) + paper_rows_note + "." + left_out_notes(index);
-    fitness_latex_layout(t);
+    t.latex_note = fitness_note(index, p, true);
+    t.caption = "Problem: " + p.spec + ". " + fitness_note(index, p, false) +
+                " The gap f - f* is what an optimiser could still gain." +
+                (paper ? " Paper values: " + paper_source(p) + paper_rows_note + "." : std::string()) +
+                left_out_notes(index);
+    fitness_latex_layout(t, paper);
     format_columns(t);
     return t;
 }
@@ -164,10 +182,12 @@ ParameterDecimals paper_identification_decimals(const std::vector<PmsmProblem>& 
 }
 
 // The mean over runs of each of the paper's parameters with its |error| against the true value.
-std::vector<TableCell> study_row(const StudyIndex& index, const RunGroup& g, const std::string& condition) {
+std::vector<TableCell> study_row(const StudyIndex& index, const RunGroup& g, const std::string& condition,
+                                 bool paper) {
     const RunRecord& first = *g.runs.front();
-    std::vector<TableCell> row = {text_cell(condition), text_cell(index.label(g.algorithm)),
-                                  text_cell("this study, mean of " + std::to_string(g.runs.size()))};
+    std::vector<TableCell> row = {text_cell(condition), text_cell(index.label(g.algorithm))};
+    if (paper)
+        row.push_back(text_cell("this study, mean of " + std::to_string(g.runs.size())));
     for (std::size_t j = 0; j < pmsm_parameter_names.size(); ++j) {
         std::vector<double> v;
         std::size_t k = first.parameter_names.size();
@@ -198,39 +218,97 @@ std::vector<TableCell> paper_row(const StudyIndex& index, const std::string& alg
     return row;
 }
 
-Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& problems) {
+// A problem's condition as the conditions table heads its rows: its name without "PMSM, ".
+std::string condition_text(const PmsmProblem& p) {
+    if (p.published != nullptr)
+        return format_number(p.published->load) + " N m, " + format_number(p.published->speed) + " rpm";
+    return p.name.rfind("PMSM, ", 0) == 0 ? p.name.substr(6) : p.name;
+}
+
+// Whether a problem's runs identify the paper's four parameters against known true values.
+bool identifies_paper_parameters(const StudyIndex& index, const PmsmProblem& p) {
+    const auto algorithms = index.algorithms_on(p.spec);
+    if (algorithms.empty())
+        return false;
+    const RunRecord& first = *index.find(p.spec, algorithms.front())->runs.front();
+    return !first.true_parameters.empty() && first.parameter_names.size() >= pmsm_parameter_names.size();
+}
+
+// The conditions side by side: the paper's Table 4 (with the published rows) when framed as the
+// paper's, else the study's own; `problems` are those to show (two or more).
+Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& problems, bool paper) {
     Table t;
-    t.id = "table4_conditions";
-    t.title = "Table 4: Identification results under different working conditions";
-    t.header = {"Condition", "Algorithm", "Source"};
+    t.id = paper ? "table4_conditions" : "conditions";
+    t.title = paper ? "Table 4: Identification results under different working conditions"
+                    : "Identified parameters under each operating condition";
+    t.header = {"Condition", "Algorithm"};
+    if (paper)
+        t.header.push_back("Source");
     for (const auto& n : pmsm_parameter_names)
         t.header.push_back(std::string(n));
     const ParameterDecimals paper_decimals = paper_identification_decimals(problems);
     for (const auto& p : problems) {
-        if (p.published == nullptr)
-            continue;
-        const std::string condition =
-            format_number(p.published->load) + " N m, " + format_number(p.published->speed) + " rpm";
+        const std::string condition = condition_text(p);
         for (const auto& a : index.algorithms_on(p.spec)) {
-            t.add_row(study_row(index, *index.find(p.spec, a), condition));
-            if (const auto* published = published_identification(p, a))
+            t.add_row(study_row(index, *index.find(p.spec, a), condition, paper));
+            if (const auto* published = paper ? published_identification(p, a) : nullptr)
                 t.add_row(paper_row(index, a, condition, *published, paper_decimals));
         }
     }
-    t.caption =
-        "Identified value / |error| against the true value, this study (mean over runs) beside the paper's "
-        "Table 4 (" +
-        std::string(paper_citation) + ")" + paper_rows_note + ".";
+    t.latex_note = "Identified value / |error| against the true value, mean over runs.";
+    t.caption = t.latex_note;
+    if (paper)
+        t.caption +=
+            " Beside the paper's Table 4 (" + std::string(paper_citation) + ")" + paper_rows_note + ".";
+    const std::size_t first_parameter = paper ? 3 : 2;
     t.latex_column(0).fold_constant = true;
     t.latex_column(0).heading = true; // several conditions: each heads its rows
-    t.latex_column(1).key = true;
-    t.latex_column(2).key = true;
+    for (std::size_t c = 1; c < first_parameter; ++c)
+        t.latex_column(c).key = true;
     for (std::size_t j = 0; j < pmsm_parameter_names.size(); ++j)
-        t.latex_column(3 + j).header = parameter_latex(std::string(pmsm_parameter_names[j]));
+        t.latex_column(first_parameter + j).header = parameter_latex(std::string(pmsm_parameter_names[j]));
     // The error on a line of its own under the value keeps the four parameters side by side.
     t.latex_spread_below = true;
     format_columns(t);
     return t;
+}
+
+// How many operating points (speed and load, or the simulated conditions, or the logged data) the
+// problems have: a model or noise alone does not make another condition.
+std::size_t operating_points(const std::vector<PmsmProblem>& problems) {
+    std::vector<std::string> points;
+    for (const auto& p : problems) {
+        const SpecText spec = split_spec_text(p.spec);
+        std::string point;
+        for (const char* key : {"speed", "load", "conditions", "data"})
+            if (const auto at = spec.parameters.find(key); at != spec.parameters.end())
+                point += std::string(key) + "=" + at->second + ";";
+        if (std::find(points.begin(), points.end(), point) == points.end())
+            points.push_back(point);
+    }
+    return points.size();
+}
+
+// Every PMSM table of the study: fitness and parameters per problem, then the conditions side by
+// side when two or more identify the paper's parameters (the paper's ones, when framed as its).
+std::vector<Table> pmsm_identification_tables(const StudyIndex& index, bool paper) {
+    std::vector<Table> out;
+    const auto problems = pmsm_problems(index, paper);
+    std::vector<PmsmProblem> conditions;
+    for (const auto& p : problems) {
+        const auto algorithms = index.algorithms_on(p.spec);
+        if (algorithms.empty())
+            continue;
+        out.push_back(fitness_table(index, p));
+        if (!index.find(p.spec, algorithms.front())->runs.front()->parameter_names.empty())
+            out.push_back(parameter_table(index, p));
+        // The paper's Table 4 holds only the conditions it ran; the study's own, every one.
+        if (identifies_paper_parameters(index, p) && (!paper || p.published != nullptr))
+            conditions.push_back(p);
+    }
+    if (operating_points(conditions) >= 2)
+        out.push_back(conditions_table(index, conditions, paper));
+    return out;
 }
 
 } // namespace
@@ -239,22 +317,26 @@ Table conditions_table(const StudyIndex& index, const std::vector<PmsmProblem>& 
 
 namespace mhb {
 
+std::vector<Table> pmsm_tables(const StudyIndex& index) {
+    return tables::pmsm_identification_tables(index, false);
+}
+
 std::vector<Table> pmsm_paper_tables(const StudyIndex& index) {
-    std::vector<Table> out;
-    const auto problems = tables::pmsm_problems(index);
-    bool any_published = false;
-    for (const auto& p : problems) {
-        const auto algorithms = index.algorithms_on(p.spec);
-        if (algorithms.empty())
-            continue;
-        out.push_back(tables::fitness_table(index, p));
-        if (!index.find(p.spec, algorithms.front())->runs.front()->parameter_names.empty())
-            out.push_back(tables::parameter_table(index, p));
-        any_published = any_published || p.published != nullptr;
+    return tables::pmsm_identification_tables(index, true);
+}
+
+bool is_pmsm_table_id(const std::string& id) {
+    for (const char* table : {"table2_fitness", "table3_parameters", "table4_conditions", "fitness",
+                              "parameters", "conditions"}) {
+        const std::string name = table;
+        if (id == name || id.rfind(name + "_pmsm", 0) == 0)
+            return true;
     }
-    if (any_published)
-        out.push_back(tables::conditions_table(index, problems));
-    return out;
+    return false;
+}
+
+bool is_paper_budget(const std::string& budget) {
+    return budget == tables::paper_budget;
 }
 
 } // namespace mhb

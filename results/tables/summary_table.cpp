@@ -222,6 +222,10 @@ Table summary_table(const StudyIndex& index, const ComparisonOptions& options) {
         t.add_row(std::move(row));
     }
     t.caption = summary_caption(index, budgets, without_success);
+    t.latex_note = "Final best-so-far value over the runs; Success and ERT to the study's target; budget "
+                   "columns: median after that share of the evaluations (Methods)." +
+                   left_out_notes(index);
+    t.methods = {t.caption.substr(0, t.caption.size() - left_out_notes(index).size())};
     summary_latex_layout(t, options, budgets);
     format_columns(t);
     return t;

@@ -34,7 +34,7 @@ std::vector<TableCell> comparison_row(const StudyIndex& index, const Comparison&
                                   c.test.exact ? empty_cell() : number_cell(c.test.z, 3),
                                   number_cell(c.test.p_value, 3),
                                   number_cell(c.adjusted_p, 3),
-                                  number_cell(c.a12, 3)};
+                                  fixed_cell(c.a12, 3)}; // in [0, 1]: three decimals align
     if (c.paired) {
         row.push_back(number_cell(static_cast<double>(c.pairs), 6));
         row.push_back(test_cell(c.paired_test));
@@ -147,6 +147,12 @@ Table tests_table(const StudyIndex& index, const std::vector<Comparison>& compar
         t.add_row(comparison_row(index, c));
     add_win_tie_loss_rows(t, index, comparisons);
     t.caption = tests_caption(index, comparisons, options);
+    t.latex_note = "Each algorithm against " + index.label(options.reference) +
+                   ": Holm-adjusted p of the rank-sum and signed-rank tests, effect size A12, and the marker "
+                   "(Methods)." +
+                   untested_note(index, options.reference) + left_out_notes(index);
+    t.methods = {t.caption.substr(0, t.caption.size() - untested_note(index, options.reference).size() -
+                                         left_out_notes(index).size())};
     tests_latex_layout(t);
     format_columns(t);
     return t;

@@ -79,9 +79,10 @@ po::options_description report_options(ReportCommandLine& given) {
     po::options_description visible(
         "Usage: mhbench report DIR [options]\n\n"
         "Rebuilds, from the study directory DIR alone, the report in DIR/report/:\n"
-        "  - for PMSM problems, the paper's tables (Li, Wang, Ji 2017, ITLBO): Table 2 (fitness mean/std\n"
-        "    beside the published values, evaluations spent, gap to the least-squares optimum f*),\n"
-        "    Table 3 (identified parameters, % errors, the least-squares theta*) and Table 4 (conditions);\n"
+        "  - for PMSM problems: fitness (mean/std, evaluations spent, gap to the least-squares optimum\n"
+        "    f*), identified parameters (% errors, the least-squares theta*) and, with several operating\n"
+        "    conditions, the conditions side by side; a study with protocol = pmsm-paper (the paper\n"
+        "    presets) gets them as the paper's Tables 2-4 beside the published values at 150 iterations;\n"
         "  - for every problem: summary statistics, ERT, medians at 1/10/100% of one evaluation count\n"
         "    per problem (the same for every algorithm); Wilcoxon rank-sum (and, for paired runs,\n"
         "    signed-rank) tests against a reference with Holm correction and Vargha-Delaney A12; the\n"

@@ -1,7 +1,6 @@
 #include "runner/study/study.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -13,6 +12,7 @@
 #include "problems/core/spec.hpp"
 #include "problems/core/spec_grid.hpp"
 #include "results/protocols/protocol_registry.hpp"
+#include "runner/study/algorithm_labels.hpp"
 
 namespace mhb {
 namespace {
@@ -87,35 +87,27 @@ std::string with_label(const std::string& spec, const std::string& label) {
     return spec + (spec.find(':') == std::string::npos ? ":" : ",") + "label=" + label;
 }
 
-// The readable name of one variant of a grid: the name with the braced values, booleans as a
-// letter and a sign (itlbo[T+S-O+]), other values as key=value (pso[w=0.4]).
-std::string grid_label(const AlgorithmRegistry::Entry& entry,
-                       const std::vector<std::pair<std::string, std::string>>& varying) {
-    std::vector<std::pair<std::string, std::string>> switches; // key, normal value
-    std::vector<std::string> others;
-    for (const auto& [key, value] : varying) {
-        const ParameterInfo& p = AlgorithmRegistry::declaration(entry, key);
-        if (p.kind == ParameterKind::boolean)
-            switches.emplace_back(key, normal_value(p, value));
-        else
-            others.push_back(key + "=" + normal_value(p, value));
+// The labels of the specs without `label=` that are not grid variants, decided together
+// (algorithm_labels.hpp): canonical spec -> label. Specs with errors are left to prepare_algorithms.
+std::map<std::string, std::string> default_labels(const Study& study, const AlgorithmRegistry& registry) {
+    std::map<std::string, std::string> wanted;
+    std::vector<std::string> taken;
+    for (const auto& text : study.algorithms) {
+        try {
+            const std::vector<GridVariant> variants = expand_grid(text);
+            for (const auto& variant : variants) {
+                const Spec spec = Spec::parse(variant.text);
+                if (const std::string* given = spec.find("label"))
+                    taken.push_back(*given);
+                else if (!variant.varying.empty())
+                    taken.push_back(grid_label(registry.find(spec.name), variant.varying));
+                else
+                    wanted[registry.minimal(spec).canonical()] = short_label(registry, spec);
+            }
+        } catch (const std::exception&) {
+        }
     }
-    // One capital letter per switch while the letters tell them apart; the whole key otherwise.
-    bool letters_unique = true;
-    for (std::size_t i = 0; i < switches.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j)
-            letters_unique = letters_unique && switches[i].first[0] != switches[j].first[0];
-    std::string inside;
-    for (const auto& [key, value] : switches) {
-        const std::string sign = value == "on" ? "+" : "-";
-        if (letters_unique)
-            inside += static_cast<char>(std::toupper(static_cast<unsigned char>(key[0]))) + sign;
-        else
-            inside += (inside.empty() ? "" : ",") + key + sign;
-    }
-    for (const auto& o : others)
-        inside += (inside.empty() ? "" : ",") + o;
-    return entry.name + "[" + inside + "]";
+    return unique_short_labels(wanted, taken);
 }
 
 // Expands the algorithm specs (grids, labels), validates and builds each optimiser.
@@ -125,6 +117,7 @@ void prepare_algorithms(const Study& study, const AlgorithmRegistry& registry, P
         errors.emplace_back("no algorithm given");
     std::map<std::string, std::string> where_spec;  // canonical spec -> the text that gave it
     std::map<std::string, std::string> where_label; // label -> canonical spec
+    const std::map<std::string, std::string> short_labels = default_labels(study, registry);
     for (std::size_t i = 0; i < study.algorithms.size(); ++i) {
         const std::string origin = origin_of(study.algorithm_origins, i);
         std::vector<GridVariant> variants;
@@ -158,8 +151,13 @@ void prepare_algorithms(const Study& study, const AlgorithmRegistry& registry, P
                 }
                 const AlgorithmRegistry::Entry& entry = registry.find(spec.name);
                 const std::string canonical = registry.minimal(spec).canonical();
-                if (label.empty())
-                    label = variant.varying.empty() ? canonical : grid_label(entry, variant.varying);
+                // A short label is derived again whenever the study is prepared, so study.ini keeps
+                // the canonical spec alone; given and grid labels are written into it.
+                const bool short_label_used = label.empty() && variant.varying.empty();
+                if (short_label_used)
+                    label = short_labels.count(canonical) != 0 ? short_labels.at(canonical) : canonical;
+                else if (label.empty())
+                    label = grid_label(entry, variant.varying);
                 if (const auto seen = where_spec.find(canonical); seen != where_spec.end()) {
                     // The same optimiser twice would repeat the same runs, counted twice.
                     errors.push_back((origin.empty() ? "" : origin + ": ") + "algorithm '" + variant.text +
@@ -180,7 +178,8 @@ void prepare_algorithms(const Study& study, const AlgorithmRegistry& registry, P
                 algorithm.version = entry.version;
                 algorithm.module = {entry.module_path, entry.module_sha256};
                 prepared.algorithms.push_back(std::move(algorithm));
-                prepared.study.algorithms.push_back(with_label(canonical, label));
+                prepared.study.algorithms.push_back(short_label_used ? canonical
+                                                                     : with_label(canonical, label));
             } catch (const std::exception& e) {
                 add_lines(errors, origin, e.what());
             }

@@ -109,7 +109,10 @@ std::vector<BadInputCase> catalogue() {
          stderr_says({"mhbench run: protocol cec2017: problem 'sphere:dim=2' is not of the cec2017 suite; the protocol's "
                "tables and result files cover its functions only (write cec2017:f=...,dim=...)"})},
         {"", "run --algorithms random-search" + tiny_run + " --protocol cec2030", 2,
-         stderr_says({"mhbench run: protocol = cec2030 is not one of {cec2017, cec2022, none}"})},
+         stderr_says({"mhbench run: protocol = cec2030 is not one of {cec2017, cec2022, pmsm-paper, none}"})},
+        {"", "run --algorithms random-search" + tiny_run + " --protocol pmsm-paper", 2,
+         stderr_says({"mhbench run: protocol pmsm-paper: the study has no pmsm problem (the paper's tables are of "
+                      "PMSM identification)"})},
         {"", "run --algorithms random-search --problems sphere --runs 1e300 --iterations 5 --out s", 2,
          stderr_says({"mhbench run: runs = 1e300 is too large (at most 1000000)"})},
         {"", "run --algorithms random-search --problems sphere --iterations lots --out s", 2,

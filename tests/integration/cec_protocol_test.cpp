@@ -134,7 +134,9 @@ TEST(CecProtocolCli, Cec2017PresetAtReducedSizeWritesTheOrganisersFilesAndTables
     for (const std::string algorithm : {"pso", "cmaes"})
         for (const int f : {1, 5}) {
             const std::string problem = "cec2017:dim=10,f=" + std::to_string(f);
-            const auto file = matrix(cec / (algorithm + "_" + std::to_string(f) + "_10.txt"));
+            // Files are named by label: the registered display names (PSO, CMA-ES (IPOP)) made safe.
+            const std::string label = algorithm == std::string("pso") ? "PSO" : "CMA-ES--IPOP-";
+            const auto file = matrix(cec / (label + "_" + std::to_string(f) + "_10.txt"));
             const auto group = runs_of(runs, algorithm, problem);
             ASSERT_EQ(group.size(), 3u);
             ASSERT_EQ(file.size(), checkpoints.size()) << algorithm << " F" << f;
@@ -158,7 +160,9 @@ TEST(CecProtocolCli, Cec2017PresetAtReducedSizeWritesTheOrganisersFilesAndTables
         const std::string function = table.rows[i][table.column("Function")];
         const std::string problem = "cec2017:dim=10,f=" + function.substr(1);
         std::vector<double> errors;
-        for (const StoredRun* run : runs_of(runs, table.rows[i][table.column("Algorithm")], problem))
+        const std::string label = table.rows[i][table.column("Algorithm")]; // the table names labels
+        const std::string algorithm = label == "PSO" ? "pso" : label == "CMA-ES (IPOP)" ? "cmaes" : label;
+        for (const StoredRun* run : runs_of(runs, algorithm, problem))
             errors.push_back(rule(run->best_f - run->f_opt));
         ASSERT_EQ(errors.size(), 3u);
         std::sort(errors.begin(), errors.end());
@@ -215,7 +219,7 @@ TEST(CecProtocolCli, Cec2022StudyFileGivesEachDimensionItsBudgetAndFeTerm) {
         const std::int64_t max_fes = d == 10 ? 3000 : 6000;
         for (const StoredRun* run : group)
             EXPECT_EQ(run->evaluations, max_fes); // no target in this budget: every run spends it all
-        const auto rows = matrix(dir / "report" / "cec" / ("pso_2_" + std::to_string(d) + ".txt"));
+        const auto rows = matrix(dir / "report" / "cec" / ("PSO_2_" + std::to_string(d) + ".txt"));
         ASSERT_EQ(rows.size(), 17u);
         for (std::size_t k = 0; k < 16; ++k)
             for (std::size_t j = 0; j < 2; ++j)
@@ -254,7 +258,7 @@ TEST(CecProtocolCli, PresetsAreListedAndBadProtocolInputIsOneLine) {
         << missing.err;
     const auto protocol = run_mhbench("run --study cec2017-smoke --protocol cec2020 --dry-run");
     EXPECT_EQ(protocol.exit_code, 2);
-    EXPECT_NE(protocol.err.find("protocol = cec2020 is not one of {cec2017, cec2022, none}"),
+    EXPECT_NE(protocol.err.find("protocol = cec2020 is not one of {cec2017, cec2022, pmsm-paper, none}"),
               std::string::npos)
         << protocol.err;
 }

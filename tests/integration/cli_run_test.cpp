@@ -132,7 +132,7 @@ TEST(CliRun, DryRunPrintsTheExpandedStudyAndItsCostAndRunsNothing) {
         << r.out;
     EXPECT_TRUE(has("  itlbo[T+O+]  itlbo\n")) << r.out;
     EXPECT_TRUE(has("  itlbo[T-O-]  itlbo:obl=off,tutorial=off\n")) << r.out;
-    EXPECT_TRUE(has("  tlbo         tlbo\n")) << r.out;
+    EXPECT_TRUE(has("  TLBO         tlbo\n")) << r.out; // its registered display name
     EXPECT_TRUE(has("  sphere:dim=3\n"));
     EXPECT_TRUE(has("  evaluations=300: 15000 evaluations\n")) << r.out; // 5 x 2 x 5 x 300, exactly
     EXPECT_TRUE(has("  iterations=4: about ")) << r.out;

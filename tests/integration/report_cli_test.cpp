@@ -83,9 +83,12 @@ TEST(ReportCli, WritesTheTablesAndWithTablesPrintsThemInMarkdown) {
     const fs::path dir = small_study_dir("ok");
     const Outcome o = run_report_cli("report '" + dir.string() + "' --no-figures --tables");
     EXPECT_EQ(o.exit_code, 0) << o.err;
-    EXPECT_NE(o.out.find("### Table 2: Fitness of different algorithms"), std::string::npos) << o.out;
+    // No protocol: the study's own PMSM tables, never the paper's Table 2.
+    EXPECT_NE(o.out.find("### Fitness of each algorithm (PMSM, 2500 rpm, 2 N m)"), std::string::npos)
+        << o.out;
+    EXPECT_EQ(o.out.find("Table 2"), std::string::npos) << o.out;
     EXPECT_NE(o.out.find("| itlbo | 3/3 |"), std::string::npos) << o.out;
-    EXPECT_TRUE(fs::exists(dir / "report" / "table3_parameters.tex"));
+    EXPECT_TRUE(fs::exists(dir / "report" / "parameters.tex"));
     EXPECT_TRUE(fs::exists(dir / "report" / "curves_iteration.csv"));
 }
 
@@ -95,7 +98,7 @@ TEST(ReportCli, QuietWritesTheReportAndPrintsNothing) {
     EXPECT_EQ(o.exit_code, 0) << o.err;
     EXPECT_EQ(o.out, "");
     EXPECT_EQ(o.err, "");
-    EXPECT_TRUE(fs::exists(dir / "report" / "table3_parameters.tex"));
+    EXPECT_TRUE(fs::exists(dir / "report" / "parameters.tex"));
     EXPECT_TRUE(fs::exists(dir / "report" / "index.html"));
 }
 
@@ -104,13 +107,12 @@ TEST(ReportCli, SeveralBudgetsEachInItsOwnFolderWithLabels) {
     const Outcome o = run_report_cli("report '" + dir.string() + "' --no-figures --tables");
     EXPECT_EQ(o.exit_code, 0) << o.err;
     EXPECT_NE(o.out.find("2 budgets, each reported in its own folder"), std::string::npos) << o.out;
-    EXPECT_NE(o.out.find("### Table 2: Fitness of different algorithms (pmsm:load=2,speed=2500) [budget "
-                         "evaluations=100]"),
+    EXPECT_NE(o.out.find("### Fitness of each algorithm (PMSM, 2500 rpm, 2 N m) [budget evaluations=100]"),
               std::string::npos)
         << o.out;
     EXPECT_NE(o.out.find("| PSO 2017 | 3/3 |"), std::string::npos) << o.out;
     EXPECT_TRUE(fs::exists(dir / "report" / "budgets.csv"));
-    EXPECT_TRUE(fs::exists(dir / "report" / "iterations_1" / "table2_fitness.md"));
+    EXPECT_TRUE(fs::exists(dir / "report" / "iterations_1" / "fitness.md"));
     EXPECT_TRUE(fs::exists(dir / "report" / "evaluations_100" / "curves_iteration.csv"));
     // All seeds are equal here: the runs pair, and the tests table says so.
     EXPECT_NE(read_text(dir / "report" / "iterations_1" / "tests.md").find("Wilcoxon signed-rank"),

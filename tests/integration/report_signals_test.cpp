@@ -159,7 +159,8 @@ TEST(ReportSignals, KillingTheReportKillsThePlottingScript) {
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
     EXPECT_TRUE(wait_until([&] { return processes_with(marker).empty(); }, 5.0))
         << "the plotting script outlived the report";
-    EXPECT_TRUE(fs::exists(dir / "report" / "table2_fitness.md")); // written before the figures
+    EXPECT_TRUE(
+        fs::exists(dir / "report" / "fitness_pmsm_load_2_speed_2500.md")); // written before the figures
     EXPECT_EQ(temporary_files(dir / "report"), std::vector<std::string>{});
 }
 
@@ -203,7 +204,7 @@ TEST(ReportSignals, AStopAlreadyAskedForStartsNoFigure) {
     EXPECT_TRUE(build_report(study_in_memory(dir / "study"), options, console).interrupted);
     EXPECT_EQ(errors.str(), "figures interrupted; run `mhbench report " + (dir / "study").string() +
                                 " --out " + options.out_dir.string() + "` to draw them\n");
-    EXPECT_TRUE(fs::exists(dir / "report" / "table2_fitness.md"));
+    EXPECT_TRUE(fs::exists(dir / "report" / "fitness_pmsm_load_2_speed_2500.md"));
     options.figures = false; // nothing was to be drawn: nothing was interrupted
     EXPECT_FALSE(build_report(study_in_memory(dir / "study"), options, console).interrupted);
 }

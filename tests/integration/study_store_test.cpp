@@ -226,7 +226,7 @@ TEST(StudyStore, AFlippedByteInAStoredValueIsComputedAgainWithOneWarning) {
             warnings.push_back(line);
     ASSERT_EQ(warnings.size(), 1u) << again.err;
     EXPECT_EQ(warnings[0], "mhbench run: warning: " + (dir / "store.bin").string() +
-                               ": the record of run 1 (pso, sphere:dim=2, evaluations=400, run 1) is "
+                               ": the record of run 1 (PSO, sphere:dim=2, evaluations=400, run 1) is "
                                "damaged; it will be computed again");
     expect_same_records(dir, reference);
 }

@@ -5,12 +5,14 @@
 // an ablation (8 variants x 3 conditions: tables long enough to be split into several floats) do
 // the same in two-column journals, IEEEtran's conference layout and elsarticle's 5p (issue 21).
 // Skipped where pdflatex, or the journal's class, is missing (scripts/latex-check.sh installs them).
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "integration/cli_harness.hpp"
 #include "support/files.hpp"
@@ -143,6 +145,68 @@ TEST(LatexReport, AblationTablesFitTwoColumnElsevierPages) {
             << "no pdflatex or no elsarticle.cls (scripts/latex-check.sh installs texlive-publishers)";
     const fs::path report = ablation_report("elsevier");
     EXPECT_EQ(tables_in(report, "tables_elsevier", "[5p]{elsarticle}"), "");
+}
+
+// The ```latex blocks of README.md's section "## Tables in your paper", in order.
+std::vector<std::string> readme_latex_blocks() {
+    const std::string readme = read_text(fs::path(MHB_SOURCE_DIR) / "README.md");
+    const std::size_t begin = readme.find("\n## Tables in your paper\n");
+    EXPECT_NE(begin, std::string::npos) << "README.md has no section \"Tables in your paper\"";
+    if (begin == std::string::npos)
+        return {};
+    const std::size_t end = std::min(readme.find("\n## ", begin + 1), readme.size());
+    const std::string section = readme.substr(begin, end - begin);
+    std::vector<std::string> blocks;
+    static const std::string open = "```latex\n";
+    for (std::size_t at = section.find(open); at != std::string::npos; at = section.find(open, at + 1)) {
+        const std::size_t from = at + open.size();
+        blocks.push_back(section.substr(from, section.find("```", from) - from));
+    }
+    return blocks;
+}
+
+// The floats of a .tex file that name fewer than two of `labels` (a float holding one algorithm).
+std::string floats_with_one_algorithm(const std::string& tex, const std::vector<std::string>& labels) {
+    std::string out;
+    for (std::size_t at = tex.find("\\begin{table"); at != std::string::npos;
+         at = tex.find("\\begin{table", at + 1)) {
+        std::string body = tex.substr(at, tex.find("\\end{table", at) - at);
+        std::size_t named = 0;
+        for (const auto& label : labels) // longest first: ITLBO before TLBO
+            if (const std::size_t found = body.find(label); found != std::string::npos) {
+                ++named;
+                for (std::size_t k = body.find(label); k != std::string::npos; k = body.find(label))
+                    body.replace(k, label.size(), "");
+            }
+        if (named < 2)
+            out += tex.substr(at, 200) + "\n...\n";
+    }
+    return out;
+}
+
+// README.md's documents for IEEEtran and elsarticle compile with the tables of a real report: five
+// algorithms with their default labels (an NLopt and a CMA-ES spec among them) on one PMSM problem;
+// and no float of those tables holds one algorithm (issue 37).
+TEST(LatexReport, ReadmeDocumentsCompileWithAPmsmStudysTables) {
+    if (!have_pdflatex() || !have_tex_file("IEEEtran.cls") || !have_tex_file("elsarticle.cls"))
+        GTEST_SKIP() << "no pdflatex, IEEEtran.cls or elsarticle.cls (scripts/latex-check.sh installs them)";
+    const std::vector<std::string> blocks = readme_latex_blocks();
+    ASSERT_EQ(blocks.size(), 2u);
+    EXPECT_NE(blocks[0].find("{IEEEtran}"), std::string::npos);
+    EXPECT_NE(blocks[1].find("{elsarticle}"), std::string::npos);
+    const fs::path report =
+        run_study("readme", "--algorithms 'itlbo tlbo pso nlopt:algorithm=LN_BOBYQA cmaes' "
+                            "--problems pmsm:speed=2500,load=2 --runs 5 --iterations 30");
+    const fs::path study = report.parent_path();
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        const std::string name = "paper_" + std::to_string(i) + ".tex";
+        std::ofstream(study / name) << blocks[i];
+        EXPECT_EQ(compile(study, name), "") << blocks[i];
+    }
+    const std::vector<std::string> labels = {"CMA-ES (IPOP)", "BOBYQA", "ITLBO", "TLBO", "PSO"};
+    for (const char* table : {"fitness", "parameters", "summary", "comparison", "tests"})
+        EXPECT_EQ(floats_with_one_algorithm(read_text(report / (std::string(table) + ".tex")), labels), "")
+            << table;
 }
 
 TEST(LatexReport, GoldenFixtureCompiles) {

@@ -96,7 +96,7 @@ class StudyModuleTest(unittest.TestCase):
     def test_every_run_has_its_label_from_algorithms_csv(self):
         runs = self.study.runs
         self.assertEqual(list(runs["label"]), [self.labels[row["algorithm"]] for row in self.csv_runs])
-        self.assertEqual(sorted(set(runs["label"])), ["TLBO-x", "itlbo", "pso"])
+        self.assertEqual(sorted(set(runs["label"])), ["ITLBO", "PSO", "TLBO-x"])
         self.assertTrue((runs.loc[runs["label"] == "TLBO-x", "algorithm"] == "tlbo").all())
 
     def test_best_x_columns_are_the_numbers_of_best_x(self):

@@ -78,13 +78,13 @@ TEST(SuiteProtocolRegistry, AProtocolRegisteredAtRunTimeIsNamedLikeTheBuiltIns) 
     register_tiny();
     ASSERT_NE(find_protocol("tiny"), nullptr);
     EXPECT_EQ(find_protocol("tiny")->title(), "Tiny");
-    EXPECT_EQ(protocol_names(), "cec2017, cec2022, tiny");
+    EXPECT_EQ(protocol_names(), "cec2017, cec2022, pmsm-paper, tiny");
     EXPECT_THROW(register_protocol(std::make_unique<TinyProtocol>()), std::logic_error);
-    // The paper's tables are in force for every study and cannot be named.
-    EXPECT_EQ(find_protocol("pmsm-paper"), nullptr);
-    EXPECT_EQ(names_of(protocols_in_force("")), std::vector<std::string>{"pmsm-paper"});
-    EXPECT_EQ(names_of(protocols_in_force("tiny")), (std::vector<std::string>{"pmsm-paper", "tiny"}));
-    EXPECT_EQ(names_of(protocols_in_force("cec2022")), (std::vector<std::string>{"cec2022", "pmsm-paper"}));
+    // The paper's tables are a protocol a study names (the paper presets do); none is in force unnamed.
+    ASSERT_NE(find_protocol("pmsm-paper"), nullptr);
+    EXPECT_EQ(names_of(protocols_in_force("")), std::vector<std::string>{});
+    EXPECT_EQ(names_of(protocols_in_force("tiny")), (std::vector<std::string>{"tiny"}));
+    EXPECT_EQ(names_of(protocols_in_force("pmsm-paper")), (std::vector<std::string>{"pmsm-paper"}));
 }
 
 TEST(SuiteProtocolRunner, TheRunnerAcceptsAStudyNamingItAndAsksItToCheckTheStudy) {

@@ -322,8 +322,9 @@ TEST(StudyProtocol, AStudyFollowsACecProtocolByName) {
     std::vector<std::string> errors;
     Study bad;
     parse_study_file("protocol = cec2014\n", "bad.ini", bad, errors);
-    EXPECT_EQ(errors, (std::vector<std::string>{
-                          "bad.ini:1: protocol = cec2014 is not one of {cec2017, cec2022, none}"}));
+    EXPECT_EQ(errors,
+              (std::vector<std::string>{
+                  "bad.ini:1: protocol = cec2014 is not one of {cec2017, cec2022, pmsm-paper, none}"}));
 
     Study wrong = s;
     wrong.problems = {"cec2017:f=1,dim=10", "sphere:dim=10", "bbob:f=1,dim=10"};
@@ -336,7 +337,7 @@ TEST(StudyProtocol, AStudyFollowsACecProtocolByName) {
         "fractions of it (write evaluations=10000*dim)");
     Study unknown = s;
     unknown.protocol = "cec2005";
-    EXPECT_EQ(error_of(unknown), "protocol = cec2005 is not one of cec2017, cec2022");
+    EXPECT_EQ(error_of(unknown), "protocol = cec2005 is not one of cec2017, cec2022, pmsm-paper");
 }
 
 // Run identities of a study with plain budgets, as the store of an mhbench without dimension budgets
@@ -363,8 +364,9 @@ TEST(StudyBudget, IdentitiesOfExistingStudiesAreUnchanged) {
     };
     for (const auto& [id, identity] : pinned)
         EXPECT_EQ(run_key(p, id).identity, identity) << "run " << id << ": " << run_key(p, id).slot;
+    // The slot names the run by its label, which is display only: the identities above hold.
     EXPECT_EQ(run_key(p, 15).slot,
-              "pso:w=0.6 | bbob:dim=2,f=2,instance=1 | evaluations=300,target=1e-08 | 1");
+              "PSO (w=0.6) | bbob:dim=2,f=2,instance=1 | evaluations=300,target=1e-08 | 1");
 }
 
 } // namespace

@@ -76,7 +76,7 @@ TEST(StudyDesign, LabelsNameVariantsAndSameMeaningSpecsAreOneOptimiser) {
     const PreparedStudy p = prepare_study(paper_study({"tlbo:label=TLBO (Rao 2011)", "pso:w=0.7"}));
     EXPECT_EQ(p.algorithms[0].info.label, "TLBO (Rao 2011)");
     EXPECT_EQ(p.algorithms[0].info.spec, "tlbo");
-    EXPECT_EQ(p.algorithms[1].info.label, "pso:w=0.7");
+    EXPECT_EQ(p.algorithms[1].info.label, "PSO (w=0.7)");
     EXPECT_EQ(error_lines(paper_study({"tlbo", "tlbo:np=50"})),
               (std::vector<std::string>{
                   "algorithm 'tlbo:np=50' is the same optimiser as 'tlbo' (both are 'tlbo')"}));
@@ -92,6 +92,56 @@ TEST(StudyDesign, LabelsNameVariantsAndSameMeaningSpecsAreOneOptimiser) {
     q.problems = {"sphere:dim=10", "sphere:dim=1e1"};
     EXPECT_EQ(error_lines(q),
               (std::vector<std::string>{"problem 'sphere:dim=10' is the same problem as 'sphere:dim=10'"}));
+}
+
+// Without label=, an algorithm is named by the short display name its registration declares, with
+// its non-default parameters; study.ini keeps the canonical spec (the label is derived again).
+TEST(StudyDesign, DefaultLabelsAreTheRegisteredDisplayNamesWithTheirNonDefaultParameters) {
+    const std::vector<std::pair<std::string, std::string>> expected = {
+        {"itlbo", "ITLBO"},
+        {"tlbo", "TLBO"},
+        {"pso", "PSO"},
+        {"de", "DE"},
+        {"lshade", "L-SHADE"},
+        {"jso", "jSO"},
+        {"nl-shade-lbc", "NL-SHADE-LBC"},
+        {"lshade-cnepsin", "LSHADE-cnEpSin"},
+        {"cmaes", "CMA-ES (IPOP)"},
+        {"cmaes:restarts=bipop,lambda=20", "CMA-ES (BIPOP, lambda=20)"},
+        {"nlopt:algorithm=LN_BOBYQA", "BOBYQA"},
+        {"nlopt:algorithm=LN_NELDERMEAD", "Nelder-Mead"},
+        {"nlopt:algorithm=GN_MLSL,local=LN_SBPLX", "MLSL (local=LN_SBPLX)"},
+        {"pso:w=0.50", "PSO"}, // a default written out is no variant
+        {"tlbo:np=30", "TLBO (np=30)"}};
+    std::vector<std::string> specs;
+    std::vector<std::string> labels;
+    for (const auto& [spec, label] : expected)
+        if (spec != "pso:w=0.50") {
+            specs.push_back(spec);
+            labels.push_back(label);
+        }
+    const PreparedStudy p = prepare_study(paper_study(specs));
+    ASSERT_EQ(p.algorithms.size(), specs.size());
+    for (std::size_t i = 0; i < specs.size(); ++i)
+        EXPECT_EQ(p.algorithms[i].info.label, labels[i]) << specs[i];
+    EXPECT_EQ(prepare_study(paper_study({"pso:w=0.50"})).algorithms[0].info.label, "PSO");
+    EXPECT_EQ(study_ini(p.study).find("label="), std::string::npos) << study_ini(p.study);
+    // Grid variants keep their grid labels.
+    EXPECT_EQ(prepare_study(paper_study({"itlbo:obl={on,off}"})).algorithms[1].info.label, "itlbo[O-]");
+}
+
+// A short label two specs would share, or one that another spec's label= takes, falls back to the
+// canonical spec, whatever the order; the duplicate-label check still holds for given labels.
+TEST(StudyDesign, DefaultLabelsThatWouldClashFallBackToTheCanonicalSpec) {
+    for (const auto& order : {std::vector<std::string>{"cmaes", "tlbo:label=CMA-ES (IPOP)"},
+                              std::vector<std::string>{"tlbo:label=CMA-ES (IPOP)", "cmaes"}}) {
+        const PreparedStudy p = prepare_study(paper_study(order));
+        std::set<std::string> labels;
+        for (const auto& a : p.algorithms)
+            labels.insert(a.info.label);
+        EXPECT_EQ(labels, (std::set<std::string>{"CMA-ES (IPOP)", "cmaes"}));
+    }
+    EXPECT_EQ(error_lines(paper_study({"tlbo:label=x", "pso:label=x"})).size(), 1u);
 }
 
 TEST(StudyDesign, CommonRandomNumbersMakeItlboWithSwitchesOffTlboInsideAStudy) {
@@ -251,7 +301,7 @@ TEST(StudyDesign, TheFluxMapAndLadderPresetsMeasureSuccessRelativeToFStar) {
     for (const auto& a : flux.algorithms)
         labels.insert(a.info.label);
     for (const char* label :
-         {"itlbo", "itlbo[T+S-O-]", "itlbo[T-S+O-]", "itlbo[T-S-O+]", "tlbo", "bipop-cmaes", "bobyqa",
+         {"ITLBO", "itlbo[T+S-O-]", "itlbo[T-S+O-]", "itlbo[T-S-O+]", "TLBO", "bipop-cmaes", "bobyqa",
           "sbplx", "nelder-mead", "crs2-lm", "direct-l", "isres", "esch"})
         EXPECT_EQ(labels.count(label), 1u) << label;
     // A run on the flux map stops once f - f* <= 1e-6 x f* (36.0995588759095 A^2, the shipped one).
