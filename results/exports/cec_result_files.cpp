@@ -11,13 +11,20 @@ namespace fs = std::filesystem;
 namespace mhb {
 namespace {
 
+// A label as a file-name part: letters, digits, '.', '+' and '-' kept, every run of other characters
+// one '-', none at either end ("CMA-ES (IPOP)" -> "CMA-ES-IPOP").
 std::string safe_name(const std::string& label) {
-    std::string out = label;
-    for (char& c : out) {
+    std::string out;
+    for (const char c : label) {
         const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
                           c == '.' || c == '+' || c == '-';
-        c = keep ? c : '-';
+        if (keep)
+            out += c;
+        else if (!out.empty() && out.back() != '-')
+            out += '-';
     }
+    while (!out.empty() && out.back() == '-')
+        out.pop_back();
     return out.empty() ? std::string("algorithm") : out;
 }
 

@@ -135,7 +135,7 @@ TEST(CecProtocolCli, Cec2017PresetAtReducedSizeWritesTheOrganisersFilesAndTables
         for (const int f : {1, 5}) {
             const std::string problem = "cec2017:dim=10,f=" + std::to_string(f);
             // Files are named by label: the registered display names (PSO, CMA-ES (IPOP)) made safe.
-            const std::string label = algorithm == std::string("pso") ? "PSO" : "CMA-ES--IPOP-";
+            const std::string label = algorithm == std::string("pso") ? "PSO" : "CMA-ES-IPOP";
             const auto file = matrix(cec / (label + "_" + std::to_string(f) + "_10.txt"));
             const auto group = runs_of(runs, algorithm, problem);
             ASSERT_EQ(group.size(), 3u);

@@ -128,8 +128,10 @@ TEST(CecProtocol, TheOrganisersMatrixHasARowPerCheckpointAndAColumnPerRun) {
 
 TEST(CecProtocol, FileNamesAreAlgorithmFunctionDimension) {
     EXPECT_EQ(cec_file_name("lshade", 5, 30), "lshade_5_30.txt");
-    EXPECT_EQ(cec_file_name("itlbo[T+S-O+]", 1, 10), "itlbo-T+S-O+-_1_10.txt");
+    EXPECT_EQ(cec_file_name("itlbo[T+S-O+]", 1, 10), "itlbo-T+S-O+_1_10.txt");
     EXPECT_EQ(cec_file_name("my_pso", 12, 20), "my-pso_12_20.txt"); // '_' separates the three parts only
+    EXPECT_EQ(cec_file_name("CMA-ES (IPOP)", 3, 10),
+              "CMA-ES-IPOP_3_10.txt"); // a run of others is one dash, none at the end
 }
 
 TEST(CecProtocol, ProblemsOfTheFamilyNameTheirFunctionAndDimension) {
