@@ -89,9 +89,10 @@ po::options_description report_options(ReportCommandLine& given) {
         "    counts; Friedman ranks and Wilcoxon signed-rank across problems;\n"
         "  - each table as Markdown, CSV and LaTeX (laid out to fit a journal's page; report.tex holds\n"
         "    them all and compiles with pdflatex and TeX Live's latex-base and latex-recommended);\n"
-        "  - curve data (CSV) and figures (PDF/PNG/SVG, needs matplotlib: apt install python3-matplotlib);\n"
+        "  - curve data (CSV) and figures (PDF for a paper and PNG, needs matplotlib: apt install\n"
+        "    python3-matplotlib);\n"
         "  - index.html: one self-contained page (no network, no other file) with the study's context,\n"
-        "    every table (sortable by a click on a header) and every figure (inline SVG), a section per\n"
+        "    every table (sortable by a click on a header) and every figure (its PNG), a section per\n"
         "    budget when there are several; rebuilt by every report. Its path is printed at the end.\n"
         "The Markdown tables are also printed here.\n\nOptions");
     visible.add_options()("help,h", "this text")(
