@@ -80,6 +80,7 @@ signal.signal(signal.SIGINT, on_stop)
 signal.signal(signal.SIGTERM, on_stop)
 
 import csv  # noqa: E402
+import gc  # noqa: E402
 import json  # noqa: E402
 import math  # noqa: E402
 import os  # noqa: E402
@@ -490,6 +491,12 @@ class Job:
     def note(self, text):
         self.notes.append("figure %s: %s" % (self.name, text))
 
+    def cost(self):
+        """Relative drawing time, for the order of the jobs: CPU time of a panel of its kind (measured
+        as runner/study/calibration.cpp says) times its panels."""
+        panels = len(self.args[2]) if self.draw is panels_figure else 1
+        return JOB_COST.get(self.kind, 1.0) * panels
+
     def run(self):
         """{"drawn": 0 or 1, "failed": line or None, "notes": [...]}; a failure is one line."""
         check_stop()
@@ -507,6 +514,9 @@ def one_line(error):
     text = str(error).strip().splitlines()
     return type(error).__name__ + (": " + text[0] if text else "")
 
+
+# Per panel, or per figure of a single panel: a convergence panel is 1.
+JOB_COST = {"parameters": 3.5, "effects": 2.0, "ecdf": 1.3, "final_values": 1.0, "critical_difference": 0.8}
 
 TEMPORARY = re.compile(r"^\..+\.tmp-([0-9]+)$")
 
@@ -563,6 +573,9 @@ def run_jobs(jobs):
     import multiprocessing
 
     counter = multiprocessing.get_context("fork").Value("i", 0)
+    # What the parent loaded (matplotlib, the fonts) moves to a generation the collector never
+    # visits: a collection in a worker would otherwise touch, and so copy, every shared page.
+    gc.freeze()
     children = {}
     for _ in range(workers):
         read_end, write_end = os.pipe()
@@ -598,6 +611,9 @@ def worker(jobs, counter, write_end):
     global PARENT
     if PARENT is not None:
         PARENT = os.getppid()  # the plotting process; it watches mhbench
+    # The collector runs once per figure, when its artists' cycles are garbage, rather than every
+    # few hundred allocations while they are drawn (each pass walks them all to free nothing).
+    gc.disable()
     status = 0
     try:
         with os.fdopen(write_end, "w") as out:
@@ -609,6 +625,7 @@ def worker(jobs, counter, write_end):
                     break
                 out.write(json.dumps([i, jobs[i].run()]) + "\n")
                 out.flush()
+                gc.collect()
     except Interrupted:
         status = EXIT_INTERRUPTED
     except BaseException:  # noqa: BLE001 - a worker must end here, never return into the parent's code
@@ -670,7 +687,7 @@ class Folder:
 
 
 def plan_folder(report):
-    """The jobs of one report folder, costliest kinds first within it."""
+    """The jobs of one report folder (main() orders them by cost)."""
     folder = Folder(report)
     jobs = []
 
@@ -872,7 +889,8 @@ def parameters_figure(job, folder, problem, rows, evaluations_at):
     cols = 2 if len(by_parameter) > 1 else 1
     count = len(by_parameter)
     fig, axes, ncol = new_figure(TWO_COLUMNS if cols > 1 else COLUMN, rows=math.ceil(count / cols), cols=cols,
-                                 panel_height=1.45, legend_labels=labels + extra, left=0.6, wspace=0.75)
+                                 panel_height=1.45, legend_labels=labels + extra, left=0.6, wspace=0.75,
+                                 hspace=0.3, sharex=True)  # one x axis: labelled under the last row only
     left_out = LeftOut()
     handles, drawn = OrderedDict(), False
     x_name = "iteration" if evaluations_at is None else "evaluations (mean at each iteration)"
@@ -906,7 +924,9 @@ def parameters_figure(job, folder, problem, rows, evaluations_at):
             handles.setdefault("least-squares optimum",
                                ax.axhline(optimum, color=NEUTRAL, linestyle=":", linewidth=1.0))
         ax.set_ylabel(ylabel)
-        ax.set_xlabel(x_name)
+        if ax in axes[count - cols:]:  # the last panel of each column (above an empty one, its labels back)
+            ax.set_xlabel(x_name)
+            ax.xaxis.set_tick_params(labelbottom=True)
         zoom_on_truth(ax, truth, optimum)
         # Few ticks: matplotlib builds each tick of each panel as several artists (a third of the
         # figure's time), and four labels read as well as eight.
@@ -1297,7 +1317,12 @@ def main():
             print("%s %d" % (kind, count))
         return
     warm_up(any(job.kind == "parameters" for job in jobs))
-    results = run_jobs(jobs)
+    # Drawn costliest first, so that the workers end together (the longest-processing-time rule);
+    # the results, notes among them, are read in the plan's order.
+    order = sorted(range(len(jobs)), key=lambda i: -jobs[i].cost())
+    results = [None] * len(jobs)
+    for i, result in zip(order, run_jobs([jobs[i] for i in order])):
+        results[i] = result
     drawn = sum(r["drawn"] for r in results)
     failures += [r["failed"] for r in results if r["failed"]]
     for result in results:
