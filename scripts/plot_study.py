@@ -775,7 +775,7 @@ def panels_figure(job, folder, draw_panel, items, what, *args):
     fig, axes, ncol = new_figure(COLUMN if single else TWO_COLUMNS, rows=math.ceil(len(items) / cols), cols=cols,
                                  panel_height=height if single else height - 0.25, legend_labels=labels,
                                  title_lines=1 if single else 2, left=0.62, wspace=0.8, hspace=0.62 + room,
-                                 bottom_extra=room)
+                                 bottom_extra=room, xlabel=draw_panel is not box_panel)  # boxes: labels, no x label
     handles = OrderedDict()
     for ax, (problem, problem_rows) in zip(axes, items):
         where = "" if single else folder.problems.name(problem)
