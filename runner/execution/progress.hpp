@@ -1,10 +1,9 @@
 // Progress of a long study, on a stream (stderr in the CLI), in one of two forms:
 //  - on a terminal, a bar redrawn in place (carriage return) a few times a second:
-//      [##########..........]  12/40 runs 34%  3.1 runs/s  2.4e+06 evals/s  elapsed 0:03  eta 0:09 (runs
-//      0:07, report 0:02)
+//      [#######.............] 12/40 runs 34%  3.1 runs/s  2.4e+06 evals/s  elapsed 0:03  eta 0:09 ...
 //  - in a batch log (stderr not a terminal), a plain line every `line_interval` seconds:
-//      progress: 12/40 runs (34% of the work), 3.1 runs/s, 2.4e+06 evals/s, elapsed 0:03, eta 0:09 (runs
-//      0:07, report 0:02)
+//      progress: 12/40 runs (34% of the work), 3.1 runs/s, 2.4e+06 evals/s, elapsed 0:03, eta ...
+//    where the ETA reads "0:09 (runs 0:07, report 0:02)" when a report follows the runs.
 // Either appears only once a study has run for `delay_seconds`, so short studies print nothing.
 // The percentage and the ETA weigh each run by its expected cost (ProgressWork), not by its
 // count: a study whose long runs come last is not promised an early end. The ETA adds what
