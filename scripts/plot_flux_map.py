@@ -4,12 +4,14 @@
 Usage: plot_flux_map.py DIR [TITLE]
 
 Reads DIR/points.csv (the measured map) and DIR/curves.csv (the fitted model's psi_d(i_d) curves at
-a few levels of i_q and psi_q(i_q) curves at a few levels of i_d) and writes DIR/flux-map.pdf, .png
-and .svg: two panels as drive papers show a flux map, the measured points as markers and the
-fitted curves as lines, one colour per level. A measured point is shown on a curve when its current
-equals the curve's level (a map taken on a current grid); the curves of a map not taken on a grid
-are drawn without points. Each file is written under a temporary name and renamed, so a stop leaves
-whole figures only. Needs matplotlib (Debian: apt install python3-matplotlib); Agg backend.
+a few levels of i_q and psi_q(i_q) curves at a few levels of i_d) and writes DIR/flux-map.pdf (fonts
+embedded as TrueType, for a paper) and DIR/flux-map.png: two panels as drive papers show a flux map,
+the measured points as markers and the fitted curves as lines, one colour per level. A measured
+point is shown on a curve when its current equals the curve's level (a map taken on a current grid);
+the curves of a map not taken on a grid are drawn without points. Sizes, fonts and colours are
+plot_study.py's (scripts/figure_style.py): two columns wide, 8-9 pt serif. Each file is written
+under a temporary name and renamed, so a stop leaves whole figures only. Needs matplotlib (Debian:
+apt install python3-matplotlib); Agg backend.
 """
 import csv
 import math
@@ -22,31 +24,17 @@ def rows(path):
         return [{k: float(v) if k != "curve" else v for k, v in r.items()} for r in csv.DictReader(f)]
 
 
-def save(fig, out_dir, name):
-    for ext in ("pdf", "png", "svg"):
-        final = os.path.join(out_dir, name + "." + ext)
-        temporary = os.path.join(out_dir, "." + name + "." + ext + ".tmp-" + str(os.getpid()))
-        metadata = {"Title": name, "Date": None} if ext == "svg" else None
-        try:
-            fig.savefig(temporary, format=ext, dpi=150, bbox_inches="tight", metadata=metadata)
-            os.replace(temporary, final)
-        finally:
-            if os.path.exists(temporary):
-                os.remove(temporary)
-
-
 def panel(ax, colours, curves, points, curve, swept, level_key, flux, level_name):
     levels = sorted({c["level"] for c in curves if c["curve"] == curve})
     for index, level in enumerate(levels):
         line = [c for c in curves if c["curve"] == curve and c["level"] == level and math.isfinite(c[flux])]
         colour = colours[index % len(colours)]
-        ax.plot([c[swept] for c in line], [c[flux] for c in line], color=colour, linewidth=1.4,
-                label="%s = %g A" % (level_name, level))
+        ax.plot([c[swept] for c in line], [c[flux] for c in line], color=colour,
+                label="$%s_%s$ = %g A" % (level_name[0], level_name[2], level))
         measured = [p for p in points if abs(p[level_key] - level) <= 1e-9 * max(1.0, abs(level))]
         ax.plot([p[swept] for p in measured], [p[flux] for p in measured], linestyle="none", marker="o",
-                markersize=3.5, markerfacecolor="none", color=colour)
-    ax.grid(True, linewidth=0.4, alpha=0.5)
-    ax.legend(fontsize=7, frameon=False)
+                markerfacecolor="none", color=colour)
+    ax.legend()
 
 
 def main():
@@ -57,23 +45,28 @@ def main():
     title = sys.argv[2] if len(sys.argv) > 2 else "flux map"
     import matplotlib
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    import figure_style
+
+    figure_style.use_style(matplotlib)
+    from matplotlib.figure import Figure
 
     points = rows(os.path.join(out_dir, "points.csv"))
     curves = rows(os.path.join(out_dir, "curves.csv"))
-    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    fig, (left, right) = plt.subplots(1, 2, figsize=(9.0, 3.8))
+    # Fixed margins in inches, as plot_study.py's figures (no tight bounding box: one draw per format).
+    width, height = figure_style.TWO_COLUMNS, 3.0
+    fig = Figure(figsize=(width, height))
+    fig.subplots_adjust(left=0.6 / width, right=1 - 0.12 / width, top=1 - 0.32 / height, bottom=0.45 / height,
+                        wspace=0.3)
+    left, right = fig.subplots(1, 2)
+    colours = figure_style.PALETTE
     panel(left, colours, curves, points, "psi_d(i_d)", "i_d", "i_q", "psi_d", "i_q")
     left.set_xlabel("$i_d$ (A)")
     left.set_ylabel(r"$\psi_d$ (V s)")
     panel(right, colours, curves, points, "psi_q(i_q)", "i_q", "i_d", "psi_q", "i_d")
     right.set_xlabel("$i_q$ (A)")
     right.set_ylabel(r"$\psi_q$ (V s)")
-    fig.suptitle(title + ": measured (markers), fitted (lines)", fontsize=10)
-    fig.tight_layout()
-    save(fig, out_dir, "flux-map")
-    plt.close(fig)
+    fig.suptitle(title + ": measured (markers), fitted (lines)", y=1 - 0.04 / height, va="top")
+    figure_style.save_figure(fig, out_dir, "flux-map")
     return 0
 
 

@@ -16,7 +16,9 @@ drawn into its own figures/ folder, and every title names its budget.
 Where a problem's optimum f* is known (problems.csv), values are drawn as the gap f - f* on a log
 axis, the axis label says "f - f*"; elsewhere as f. Gaps at or below the floor (4 eps |f*|, what
 doubles resolve of f*; for f* = 0 a tenth of the smallest positive gap) -- 0 among them -- are drawn
-at the floor, a dotted line that says so.
+at the floor, a dotted line that says so. Figures of a kind drawn per problem are one figure with a
+panel per problem (<kind>_all) for two to six problems (MOST_PANELS), else one figure per problem
+(<kind>_<problem>).
   convergence_evaluations_<problem>  median best-so-far vs evaluations, IQR band (log-log)
   convergence_iteration_<problem>    the same vs iteration, only at budgets that count iterations
                                      (iterations of different algorithms are not comparable at an
@@ -24,10 +26,13 @@ at the floor, a dotted line that says so.
   parameters_<problem>               mean best-so-far of each identified parameter (one panel each,
                                      in its unit), the true value dashed and the least-squares
                                      optimum dotted; vs iteration, or vs mean evaluations at
-                                     evaluation budgets (the paper's Figs. 6-9)
+                                     evaluation budgets (the paper's Figs. 6-9); always per problem
   final_values_<problem>             box plots of the final values, one colour per algorithm
-  ecdf_target_<problem>              fraction of runs that reached the study's target (when set)
-  ecdf_targets_<problem>             fixed-target ECDF over f - f* = 1e2 ... 1e-8 (COCO's targets)
+  ecdf_target_<problem>|_all         fraction of runs that reached the study's target (when set),
+                                     the problems pooled
+  ecdf_targets_all                   fixed-target ECDF over f - f* = 1e2 ... 1e-8 (COCO's targets),
+                                     the problems pooled as COCO does; none for one problem, whose
+                                     convergence figure shows the same runs
   relative_gaps                      median relative gap per problem, one line per algorithm (a
                                      budget with a relative target and two or more such problems)
   critical_difference                Friedman average ranks with the Nemenyi critical difference
@@ -37,12 +42,14 @@ at the floor, a dotted line that says so.
   effects_interaction_<design>       A off/on, one line per level of B, for every pair of switches,
                                      pooled over the problems (or the design's only problem)
 Sizes: one column (3.5 in) for a single panel, two columns (7.16 in) for several; 8-9 pt serif
-(STIX, Times-like); PNG at 160 dpi. Figures are drawn by as many forked workers as the process may
-use CPUs (MHB_PLOT_WORKERS overrides), each figure whole or not at all (a temporary name, then a
-rename; a temporary file whose process is gone is removed by the next run).
+(STIX, Times-like); PNG at 140 dpi (scripts/figure_style.py, shared with plot_flux_map.py). Figures
+are drawn by as many forked workers as the process may use CPUs (MHB_PLOT_WORKERS overrides), each
+figure whole or not at all (a temporary name, then a rename; a temporary file whose process is gone
+is removed by the next run).
 Values a figure cannot show (not finite; <= 0 on a log axis) are left out and said so, on the figure
 and in a line on stdout. A figure that fails is one line on stderr ("figure NAME failed: reason");
-the exit status is non-zero only when figures were due and none could be drawn. Ctrl-C (SIGINT) or
+the exit status is non-zero only when figures were due and none could be drawn (3 when matplotlib
+cannot be imported: mhbench then tries its next Python). Ctrl-C (SIGINT) or
 SIGTERM stops it quietly with exit status 130; it also stops when its parent goes away (unless
 started with nohup). Needs matplotlib (Debian: apt install python3-matplotlib); Agg, no window.
 """
@@ -56,6 +63,7 @@ class Interrupted(BaseException):
 
 
 EXIT_INTERRUPTED = 130
+EXIT_NO_MATPLOTLIB = 3  # mhbench then tries its next Python (results/report/report_figures.cpp)
 STOP = []  # the signal that asked to stop, once one has
 
 
@@ -72,6 +80,7 @@ signal.signal(signal.SIGINT, on_stop)
 signal.signal(signal.SIGTERM, on_stop)
 
 import csv  # noqa: E402
+import gc  # noqa: E402
 import json  # noqa: E402
 import math  # noqa: E402
 import os  # noqa: E402
@@ -98,14 +107,11 @@ def check_stop():
 # ----------------------------------------------------------------------------------------------
 # Look: sizes, fonts, one style per algorithm
 
-COLUMN = 3.5    # in: one column of a two-column paper (IEEE, Elsevier)
-TWO_COLUMNS = 7.16
-PNG_DPI = 160
-# Okabe & Ito (2008), safe for every common colour-vision deficiency; yellow last (weak on white).
-PALETTE = ["#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442"]
+import figure_style  # noqa: E402
+from figure_style import COLUMN, NEUTRAL, PALETTE, TWO_COLUMNS  # noqa: E402
+
 MARKERS = ["o", "s", "^", "D", "v", "P", "X"]  # 7, coprime with the 8 colours: 56 distinct pairs
 LINESTYLES = ["-", "--", "-.", ":"]
-NEUTRAL = "#555555"
 
 
 def style_of(index):
@@ -121,20 +127,7 @@ def import_matplotlib():
     try:
         import matplotlib
 
-        matplotlib.use("Agg")
-        matplotlib.rcParams.update({
-            "pdf.fonttype": 42,  # TrueType, embedded: the text stays text, journals accept it
-            # STIX (Times-like, as most journals' text) with DejaVu Serif for what it lacks (the
-            # superscript digits of the log axes' "10⁻⁵"): matplotlib falls back glyph by glyph.
-            "font.family": ["STIXGeneral", "DejaVu Serif"],
-            "mathtext.fontset": "stix",
-            "font.size": 8, "axes.titlesize": 8.5, "axes.labelsize": 8, "xtick.labelsize": 7,
-            "ytick.labelsize": 7, "legend.fontsize": 7, "figure.titlesize": 9,
-            "axes.linewidth": 0.6, "lines.linewidth": 1.1, "lines.markersize": 3.5,
-            "xtick.major.width": 0.6, "ytick.major.width": 0.6, "grid.linewidth": 0.4,
-            "grid.alpha": 0.45, "axes.grid": True, "legend.frameon": False,
-            "legend.handlelength": 2.6, "savefig.dpi": PNG_DPI,
-        })
+        figure_style.use_style(matplotlib)
         from matplotlib.figure import Figure as figure_class
         # Loaded once here, before the workers fork: they share the fonts and the PDF back end.
         import matplotlib.backends.backend_agg  # noqa: F401
@@ -142,7 +135,7 @@ def import_matplotlib():
     except Exception as error:  # noqa: BLE001 - any import failure means no figures, said in one line
         sys.stderr.write("cannot import matplotlib: %s: %s\n"
                          % (type(error).__name__, (str(error).strip().splitlines() or [""])[0]))
-        sys.exit(1)
+        sys.exit(EXIT_NO_MATPLOTLIB)
     Figure = figure_class
     cache_font_subsets()
 
@@ -211,6 +204,24 @@ def short_log_axes(ax):
         axis.set_minor_formatter(FuncFormatter(lambda v, _p: "%g" % float("%.2g" % v)))
 
 
+def finish_axes(fig):
+    """What every figure's axes get once drawn: few ticks, and labels on short log axes."""
+    for ax in fig.axes:
+        few_ticks(ax)
+        short_log_axes(ax)
+
+
+def few_ticks(ax):
+    """At most five labelled ticks on a linear axis left to matplotlib's default locator: each tick is
+    several artists and a text layout per format, most of an axes' cost (an axes with matplotlib's
+    eight or nine ticks per axis costs 60% more to draw than with four), and four labels read as well."""
+    from matplotlib.ticker import AutoLocator, MaxNLocator
+
+    for axis in (ax.xaxis, ax.yaxis):
+        if axis.get_scale() == "linear" and type(axis.get_major_locator()) is AutoLocator:
+            axis.set_major_locator(MaxNLocator(nbins=4, steps=[1, 2, 2.5, 5, 10]))
+
+
 def warm_up(mathtext):
     """Draws a tiny figure in both formats: fonts, glyph and (when `mathtext`: the parameters'
     symbols) mathtext caches are then loaded once, before the workers fork."""
@@ -263,14 +274,14 @@ def legend_columns(labels, width):
 
 
 def new_figure(width, rows=1, cols=1, panel_height=1.9, legend_labels=(), title_lines=1, xlabel=True,
-               left=0.55, right=0.12, wspace=0.55, hspace=0.62, sharex=False, sharey=False):
+               left=0.55, right=0.12, wspace=0.55, hspace=0.62, sharex=False, sharey=False, bottom_extra=0.0):
     """A figure with fixed margins in inches (no tight bounding box: one draw per format), room for a
     title above and for one shared legend below the axes. Returns (figure, axes as a flat list, the
     number of legend columns)."""
     ncol = legend_columns(legend_labels, width) if legend_labels else 1
     legend_rows = math.ceil(len(legend_labels) / ncol) if legend_labels else 0
     top = 0.08 + 0.16 * title_lines
-    bottom = (0.42 if xlabel else 0.22) + (0.06 + 0.145 * legend_rows if legend_rows else 0)
+    bottom = (0.42 if xlabel else 0.22) + bottom_extra + (0.06 + 0.145 * legend_rows if legend_rows else 0)
     height = top + rows * panel_height + (rows - 1) * hspace + bottom
     fig = Figure(figsize=(width, height))
     fig.subplots_adjust(left=left / width, right=1 - right / width, top=1 - top / height,
@@ -385,10 +396,11 @@ class LeftOut:
         return sum(self.counts.values())
 
 
-def finish_note(job, ax, left_out, anything_drawn, what="values"):
-    """Writes on the figure (and in a stdout line) what it left out, or why it is empty."""
+def finish_note(job, ax, left_out, anything_drawn, what="values", where=""):
+    """Writes on the figure (and in a stdout line) what it left out, or why it is empty; `where` names
+    the panel (its problem) in the line."""
     if left_out.total():
-        job.note("left out " + left_out.text())
+        job.note((where + ": " if where else "") + "left out " + left_out.text())
     if not anything_drawn:
         ax.text(0.5, 0.5, "no finite %s to draw\n(%s)" % (what, left_out.text() or "no data"), ha="center",
                 va="center", transform=ax.transAxes)
@@ -479,14 +491,19 @@ class Job:
     def note(self, text):
         self.notes.append("figure %s: %s" % (self.name, text))
 
+    def cost(self):
+        """Relative drawing time, for the order of the jobs: CPU time of a panel of its kind (measured
+        as runner/study/calibration.cpp says) times its panels."""
+        panels = len(self.args[2]) if self.draw is panels_figure else 1
+        return JOB_COST.get(self.kind, 1.0) * panels
+
     def run(self):
         """{"drawn": 0 or 1, "failed": line or None, "notes": [...]}; a failure is one line."""
         check_stop()
         try:
             fig = self.draw(self, *self.args)
             if fig is not None:
-                for ax in fig.axes:
-                    short_log_axes(ax)
+                finish_axes(fig)
                 save(fig, self.out_dir, self.name)
             return {"drawn": 1 if fig is not None else 0, "failed": None, "notes": self.notes}
         except Exception as error:  # noqa: BLE001 - any failure of one figure must not stop the others
@@ -498,24 +515,15 @@ def one_line(error):
     return type(error).__name__ + (": " + text[0] if text else "")
 
 
+# Per panel, or per figure of a single panel: a convergence panel is 1.
+JOB_COST = {"parameters": 3.5, "effects": 2.0, "ecdf": 1.3, "final_values": 1.0, "critical_difference": 0.8}
+
 TEMPORARY = re.compile(r"^\..+\.tmp-([0-9]+)$")
-FORMATS = ("pdf", "png")
 
 
 def save(fig, out_dir, name):
-    """Writes NAME.pdf and NAME.png whole or not at all: under a temporary name, then renamed."""
-    for ext in FORMATS:
-        check_stop()
-        final = os.path.join(out_dir, name + "." + ext)
-        temporary = os.path.join(out_dir, ".%s.%s.tmp-%d" % (name, ext, os.getpid()))
-        # No date in the PDF, so that a figure redrawn is the same file.
-        metadata = {"Title": name, "CreationDate": None} if ext == "pdf" else {"Title": name}
-        try:
-            fig.savefig(temporary, format=ext, metadata=metadata)
-            os.replace(temporary, final)
-        finally:
-            if os.path.exists(temporary):
-                os.remove(temporary)
+    """NAME.pdf and NAME.png, each whole or not at all (figure_style.save_figure)."""
+    figure_style.save_figure(fig, out_dir, name, check_stop)
 
 
 def remove_stale_figures(out_dir, names):
@@ -565,6 +573,9 @@ def run_jobs(jobs):
     import multiprocessing
 
     counter = multiprocessing.get_context("fork").Value("i", 0)
+    # What the parent loaded (matplotlib, the fonts) moves to a generation the collector never
+    # visits: a collection in a worker would otherwise touch, and so copy, every shared page.
+    gc.freeze()
     children = {}
     for _ in range(workers):
         read_end, write_end = os.pipe()
@@ -600,6 +611,9 @@ def worker(jobs, counter, write_end):
     global PARENT
     if PARENT is not None:
         PARENT = os.getppid()  # the plotting process; it watches mhbench
+    # The collector runs once per figure, when its artists' cycles are garbage, rather than every
+    # few hundred allocations while they are drawn (each pass walks them all to free nothing).
+    gc.disable()
     status = 0
     try:
         with os.fdopen(write_end, "w") as out:
@@ -611,6 +625,7 @@ def worker(jobs, counter, write_end):
                     break
                 out.write(json.dumps([i, jobs[i].run()]) + "\n")
                 out.flush()
+                gc.collect()
     except Interrupted:
         status = EXIT_INTERRUPTED
     except BaseException:  # noqa: BLE001 - a worker must end here, never return into the parent's code
@@ -672,38 +687,52 @@ class Folder:
 
 
 def plan_folder(report):
-    """The jobs of one report folder, costliest kinds first within it."""
+    """The jobs of one report folder (main() orders them by cost)."""
     folder = Folder(report)
     jobs = []
 
     def add(name, kind, draw, *args):
         jobs.append(Job(folder.out_dir, name, kind, draw, folder, *args))
 
+    def per_problem(prefix, kind, draw_panel, rows, what, *args):
+        """A figure with a panel per problem, or one figure per problem (one, or more than MOST_PANELS)."""
+        items = [(problem, r) for (problem,), r in group(rows, "problem").items()]
+        if 2 <= len(items) <= MOST_PANELS:
+            add(prefix + "all", kind, panels_figure, draw_panel, items, what, *args)
+        else:
+            for item in items:
+                add(prefix + slug(item[0]), kind, panels_figure, draw_panel, [item], what, *args)
+
     curves_iteration = folder.read("curves_iteration.csv")
-    for (problem,), rows in group(folder.read("curves_evaluations.csv"), "problem").items():
-        add("convergence_evaluations_" + slug(problem), "convergence", convergence_figure, problem, rows,
-            "evaluations", True)
+    per_problem("convergence_evaluations_", "convergence", convergence_panel, folder.read("curves_evaluations.csv"),
+                "median best-so-far by evaluations", "evaluations", True)
     if counts_iterations(folder.budget):
-        for (problem,), rows in group(curves_iteration, "problem").items():
-            add("convergence_iteration_" + slug(problem), "convergence", convergence_figure, problem, rows,
-                "iteration", False)
+        per_problem("convergence_iteration_", "convergence", convergence_panel, curves_iteration,
+                    "median best-so-far by iteration", "iteration", False)
     evaluations_at = {(r["problem"], r["algorithm"], r["iteration"]): number(r["evaluations_mean"])
                       for r in curves_iteration} if not counts_iterations(folder.budget) else None
     for (problem,), rows in group(folder.read("parameters_iteration.csv"), "problem").items():
         add("parameters_" + slug(problem), "parameters", parameters_figure, problem, rows, evaluations_at)
-    for (problem,), rows in group(folder.read("final_values.csv"), "problem").items():
-        by_algorithm = group(rows, "algorithm")
-        add("final_values_" + slug(problem), "final_values", box_plot, problem, by_algorithm)
-        if any(row["evals_to_target"] for row in rows):
-            curves = [(label_of(r[0]), [number(row["evals_to_target"]) for row in r if row["evals_to_target"]],
-                       len(r)) for r in by_algorithm.values()]
-            add("ecdf_target_" + slug(problem), "ecdf", ecdf_figure, curves,
-                "fraction of runs that reached the target", folder.title(problem, "fixed-target ECDF"))
-    for (problem,), rows in group(folder.read("target_hits.csv"), "problem").items():
-        curves = [(label_of(r[0]), [number(row["evaluations"]) for row in r if row["evaluations"]], len(r))
-                  for r in group(rows, "algorithm").values()]
-        add("ecdf_targets_" + slug(problem), "ecdf", ecdf_figure, curves, "fraction of (run, target) pairs",
-            folder.title(problem, "targets f - f* = 1e2...1e-8"))
+    finals = folder.read("final_values.csv")
+    per_problem("final_values_", "final_values", box_panel, finals, "final values")
+    # Fixed-target ECDFs pool the problems, as COCO does (a problem's own is a reading of its
+    # convergence figure: the fraction of runs below each target by evaluations); of one problem,
+    # only the study's own target, which no other figure shows.
+    problems = list(OrderedDict.fromkeys(r["problem"] for r in finals))
+    if any(row["evals_to_target"] for row in finals):
+        curves = pooled_curves(finals, "evals_to_target")
+        if len(problems) == 1:
+            add("ecdf_target_" + slug(problems[0]), "ecdf", ecdf_figure, curves,
+                "fraction of runs that reached the target", folder.title(problems[0], "fixed-target ECDF"))
+        else:
+            add("ecdf_target_all", "ecdf", ecdf_figure, curves, "fraction of (problem, run) pairs",
+                "%d problems: runs that reached the study's target%s" % (len(problems), folder.suffix))
+    hits = folder.read("target_hits.csv")
+    hit_problems = list(OrderedDict.fromkeys(r["problem"] for r in hits))
+    if len(hit_problems) >= 2:
+        add("ecdf_targets_all", "ecdf", ecdf_figure, pooled_curves(hits, "evaluations"),
+            "fraction of (problem, run, target) triples",
+            "%d problems: targets f - f* = 1e2...1e-8%s" % (len(hit_problems), folder.suffix))
     gaps = folder.read("relative_gap_medians.csv")
     if gaps:
         add("relative_gaps", "relative_gaps", relative_gaps_figure, gaps)
@@ -725,6 +754,61 @@ def plan_folder(report):
 # ----------------------------------------------------------------------------------------------
 # The figures. Each takes (job, folder, ...) and returns the figure to save (None: nothing to draw).
 
+# Problems drawn as the panels of one figure per kind (the figures to read side by side, one legend,
+# and a third of the figures to draw), up to this many; a study with more gets a figure per problem
+# (nine panels on a page's width are too small to read).
+MOST_PANELS = 6
+# Per kind: (panel height, in; whether the figure has an algorithm legend).
+PANEL_LOOK = {"convergence_panel": (2.0, True), "box_panel": (1.9, False)}
+
+
+def panels_figure(job, folder, draw_panel, items, what, *args):
+    """items: (problem, rows); draw_panel(job, folder, ax, problem, rows, where, *args) draws one panel
+    and returns its legend handles. One problem: a one-column figure titled by it; several: two
+    columns, up to three panels a row, each titled by its problem, and `what` above them."""
+    height, legend = PANEL_LOOK[draw_panel.__name__]
+    rows = [row for _, r in items for row in r]
+    labels = list(OrderedDict.fromkeys(label_of(r) for r in rows)) if legend else []
+    single = len(items) == 1
+    cols = 1 if single else min(len(items), 3)
+    room = box_label_room(rows) if draw_panel is box_panel else 0.0
+    fig, axes, ncol = new_figure(COLUMN if single else TWO_COLUMNS, rows=math.ceil(len(items) / cols), cols=cols,
+                                 panel_height=height if single else height - 0.25, legend_labels=labels,
+                                 title_lines=1 if single else 2, left=0.62, wspace=0.8, hspace=0.62 + room,
+                                 bottom_extra=room, xlabel=draw_panel is not box_panel)  # boxes: labels, no x label
+    handles = OrderedDict()
+    for ax, (problem, problem_rows) in zip(axes, items):
+        where = "" if single else folder.problems.name(problem)
+        for handle in draw_panel(job, folder, ax, problem, problem_rows, where, *args):
+            key = label_of_handle(handle)  # a line that drew something stands for its algorithm first
+            if key not in handles or handles[key].get_label() != key:
+                handles[key] = handle
+        ax.set_title(folder.title(problem) if single else folder.problems.name(problem))
+    for ax in axes[len(items):]:
+        ax.set_visible(False)
+    if not single:  # in the top margin, above the panels' titles
+        fig.suptitle(what[0].upper() + what[1:] + folder.suffix, y=1 - 0.04 / fig.get_figheight(), va="top")
+    if legend:
+        shared_legend(fig, list(handles.values()), [h.get_label() for h in handles.values()], ncol)
+    return fig
+
+
+NOTHING_FINITE = " (nothing finite to draw)"
+
+
+def label_of_handle(handle):
+    """The algorithm a legend handle stands for (a line with nothing to draw says so in its label)."""
+    label = handle.get_label()
+    return label[:-len(NOTHING_FINITE)] if label.endswith(NOTHING_FINITE) else label
+
+
+def pooled_curves(rows, column):
+    """ECDF curves pooled over the problems of `rows` (one row per trial, `column` the evaluations at
+    which it succeeded, empty if never): (label, evaluations of the successes, trials) per algorithm."""
+    return [(label_of(r[0]), [number(row[column]) for row in r if row[column]], len(r))
+            for r in group(rows, "algorithm").values()]
+
+
 def algorithm_line(ax, folder, label, xs, ys, log_x, index_in_figure, **extra):
     colour, marker, linestyle = folder.styles.of(label)
     # Markers spaced along the curve (a fraction of the axes' diagonal), each algorithm offset so
@@ -732,7 +816,7 @@ def algorithm_line(ax, folder, label, xs, ys, log_x, index_in_figure, **extra):
     step = 0.11
     if not any(math.isfinite(y) for y in ys):  # nothing to draw: the legend says so (markevery needs points)
         return ax.plot([], [], color=colour, marker=marker, linestyle=linestyle,
-                       label=label + " (nothing finite to draw)", **extra)[0]
+                       label=label + NOTHING_FINITE, **extra)[0]
     return ax.plot(xs, ys, color=colour, marker=marker, linestyle=linestyle, label=label,
                    markevery=((0.013 * index_in_figure) % step, step), markersize=3.2, **extra)[0]
 
@@ -741,11 +825,10 @@ def algorithm_line(ax, folder, label, xs, ys, log_x, index_in_figure, **extra):
 MOST_BANDS = 5
 
 
-def convergence_figure(job, folder, problem, rows, x_key, log_x):
+def convergence_panel(job, folder, ax, problem, rows, where, x_key, log_x):
     by_algorithm = group(rows, "algorithm")
     labels = [label_of(r[0]) for r in by_algorithm.values()]
     scale = Scale(folder.problems.f_opt(problem), [number(r["median"]) for r in rows])
-    fig, (ax,), ncol = new_figure(COLUMN, legend_labels=labels, panel_height=2.0)
     left_out = LeftOut()
     handles, drawn = [], False
     bands = len(labels) <= MOST_BANDS
@@ -776,10 +859,8 @@ def convergence_figure(job, folder, problem, rows, x_key, log_x):
     scale.mark_floor(ax)
     ax.set_xlabel(x_key)
     ax.set_ylabel(scale.label() + (" (median, IQR)" if bands else " (median)"))
-    ax.set_title(folder.title(problem))
-    shared_legend(fig, handles, labels, ncol)
-    finish_note(job, ax, left_out, drawn)
-    return fig
+    finish_note(job, ax, left_out, drawn, where=where)
+    return handles
 
 
 def shows(value, log):
@@ -808,7 +889,8 @@ def parameters_figure(job, folder, problem, rows, evaluations_at):
     cols = 2 if len(by_parameter) > 1 else 1
     count = len(by_parameter)
     fig, axes, ncol = new_figure(TWO_COLUMNS if cols > 1 else COLUMN, rows=math.ceil(count / cols), cols=cols,
-                                 panel_height=1.45, legend_labels=labels + extra, left=0.6, wspace=0.75)
+                                 panel_height=1.45, legend_labels=labels + extra, left=0.6, wspace=0.75,
+                                 hspace=0.3, sharex=True)  # one x axis: labelled under the last row only
     left_out = LeftOut()
     handles, drawn = OrderedDict(), False
     x_name = "iteration" if evaluations_at is None else "evaluations (mean at each iteration)"
@@ -842,7 +924,9 @@ def parameters_figure(job, folder, problem, rows, evaluations_at):
             handles.setdefault("least-squares optimum",
                                ax.axhline(optimum, color=NEUTRAL, linestyle=":", linewidth=1.0))
         ax.set_ylabel(ylabel)
-        ax.set_xlabel(x_name)
+        if ax in axes[count - cols:]:  # the last panel of each column (above an empty one, its labels back)
+            ax.set_xlabel(x_name)
+            ax.xaxis.set_tick_params(labelbottom=True)
         zoom_on_truth(ax, truth, optimum)
         # Few ticks: matplotlib builds each tick of each panel as several artists (a third of the
         # figure's time), and four labels read as well as eight.
@@ -870,12 +954,11 @@ def zoom_on_truth(ax, truth, optimum):
     ax.set_ylim(max(low, centre - half), min(high, centre + half))
 
 
-def box_plot(job, folder, problem, by_algorithm):
+def box_panel(job, folder, ax, problem, rows, where):
+    by_algorithm = group(rows, "algorithm")
     labels = [label_of(r[0]) for r in by_algorithm.values()]
     data = [[number(row["best_f"]) for row in r] for r in by_algorithm.values()]
     scale = Scale(folder.problems.f_opt(problem), [v for d in data for v in d])
-    width = COLUMN if len(labels) <= 6 else TWO_COLUMNS
-    fig, (ax,), _ = new_figure(width, panel_height=1.9, xlabel=True, left=0.6)
     left_out = LeftOut()
     kept = [[scale.value(v) for v in d if left_out.keep(scale.value(v), scale.log)] for d in data]
     positions = [i + 1 for i, d in enumerate(kept) if d]
@@ -895,23 +978,29 @@ def box_plot(job, folder, problem, by_algorithm):
             ax.text(i + 1, 0.5, why, ha="center", va="center", rotation=90, fontsize=6, color="grey",
                     transform=ax.get_xaxis_transform())
     ax.set_xticks(range(1, len(data) + 1))
-    ax.set_xticklabels(labels, rotation=30 if len(labels) > 3 else 0, ha="right" if len(labels) > 3 else "center")
+    ax.set_xticklabels(labels, rotation=BOX_LABEL_ROTATION if len(labels) > 3 else 0,
+                       ha="right" if len(labels) > 3 else "center", rotation_mode="anchor")
     ax.set_xlim(0.5, len(data) + 0.5)
     ax.grid(False, axis="x")
     if positions and scale.log:
         log_axis(ax, "y")
     scale.mark_floor(ax)
     ax.set_ylabel(scale.label("final"))
-    ax.set_title(folder.title(problem))
-    # Rotated labels need room below the axes: as much as the longest label takes at 7 pt.
-    if len(labels) > 3:
-        longest = max(len(label) for label in labels)
-        bottom = 0.25 + 0.05 * longest * 0.5
-        height = fig.get_figheight()
-        fig.set_figheight(height + bottom - 0.42)
-        fig.subplots_adjust(bottom=bottom / fig.get_figheight(), top=1 - 0.3 / fig.get_figheight())
-    finish_note(job, ax, left_out, bool(positions), "final values")
-    return fig
+    finish_note(job, ax, left_out, bool(positions), "final values", where)
+    return []  # no legend: the labels stand under the boxes
+
+
+BOX_LABEL_ROTATION = 35
+
+
+def box_label_room(rows):
+    """Inches below a box plot's axes for its algorithm labels, rotated when there are more than three:
+    as much as the longest takes at 7 pt."""
+    labels = list(OrderedDict.fromkeys(label_of(r) for r in rows))
+    if len(labels) <= 3:
+        return 0.0
+    longest = max(len(label) for label in labels)
+    return 0.035 * longest * math.sin(math.radians(BOX_LABEL_ROTATION)) + 0.05
 
 
 def ecdf_figure(job, folder, curves, ylabel, title):
@@ -1228,7 +1317,12 @@ def main():
             print("%s %d" % (kind, count))
         return
     warm_up(any(job.kind == "parameters" for job in jobs))
-    results = run_jobs(jobs)
+    # Drawn costliest first, so that the workers end together (the longest-processing-time rule);
+    # the results, notes among them, are read in the plan's order.
+    order = sorted(range(len(jobs)), key=lambda i: -jobs[i].cost())
+    results = [None] * len(jobs)
+    for i, result in zip(order, run_jobs([jobs[i] for i in order])):
+        results[i] = result
     drawn = sum(r["drawn"] for r in results)
     failures += [r["failed"] for r in results if r["failed"]]
     for result in results:

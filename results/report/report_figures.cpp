@@ -45,6 +45,20 @@ std::optional<std::string> find_python(const std::vector<std::string>& candidate
 
 // The exit status plot_study.py gives when SIGINT or SIGTERM stopped it (as a shell reports Ctrl-C).
 constexpr int plot_exit_interrupted = 130;
+// ... and when the Python that runs it cannot import matplotlib: the next candidate is tried. The
+// script is its own probe: a separate `python -c "import matplotlib"` first cost a third of a second
+// of every report (issue 37).
+constexpr int plot_exit_no_matplotlib = 3;
+
+// The script run by the first candidate Python that can import matplotlib; nullopt when none can.
+std::optional<ChildOutcome> run_plot_script(const ReportOptions& options, const fs::path& out_dir) {
+    for (const auto& python : options.python_candidates) {
+        ChildOutcome run = run_child_process(python, {options.plot_script.string(), out_dir.string()}, true);
+        if (run.stop_requested || (run.started && !run.exited_with(plot_exit_no_matplotlib)))
+            return run;
+    }
+    return std::nullopt;
+}
 
 } // namespace
 
@@ -63,23 +77,20 @@ Figures draw_figures(const ReportOptions& options, const fs::path& out_dir, std:
         note = "figures skipped: the plotting script " + options.plot_script.string() + " was not found";
         return Figures::drawn_or_skipped;
     }
-    bool interrupted = false;
-    const auto python = find_python(options.python_candidates, interrupted);
-    if (interrupted)
-        return Figures::interrupted;
-    if (!python) {
-        console << "figures skipped: no Python with matplotlib found; " << how << '\n';
-        note = "figures skipped: no Python with matplotlib found; " + how;
-        return Figures::drawn_or_skipped;
-    }
     // The script's output is collected, not passed through: its notes (what a figure left out) go to
     // the console, a figure that failed is one line on `errors`, and a traceback stays in a log.
     const fs::path figures = out_dir / "figures";
     std::error_code ec;
     fs::create_directories(figures, ec);
     const fs::path log_file = figures / "plot_study.log";
-    const ChildOutcome run =
-        run_child_process(*python, {options.plot_script.string(), out_dir.string()}, true);
+    const std::optional<ChildOutcome> ran = run_plot_script(options, out_dir);
+    if (!ran) {
+        fs::remove(figures, ec); // only if empty: an earlier report's figures stay
+        console << "figures skipped: no Python with matplotlib found; " << how << '\n';
+        note = "figures skipped: no Python with matplotlib found; " + how;
+        return Figures::drawn_or_skipped;
+    }
+    const ChildOutcome& run = *ran;
     fs::remove(log_file, ec); // a stale log from an earlier report would mislead
     if (run.stop_requested || run.exited_with(plot_exit_interrupted))
         return Figures::interrupted; // the figures drawn so far are whole; the next report redraws all

@@ -78,7 +78,7 @@ void draw_figure(const fs::path& dir, const FluxMapReport& r, std::ostream& cons
     }
     const ChildOutcome run = run_child_process(*python, {script.string(), dir.string(), title}, true);
     if (run.exited_with(0)) {
-        console << "figure: " << (dir / "flux-map.pdf").string() << " (and .png, .svg)\n";
+        console << "figure: " << (dir / "flux-map.pdf").string() << " (and .png)\n";
         return;
     }
     const std::string said = run.err.empty() ? run.out : run.err;

@@ -1,7 +1,7 @@
 // The files of `mhbench identify --flux-map ... --out DIR`: estimates.csv (each parameter with its
 // standard error, spread, verdict and box), points.csv (every measured point with the model's
 // currents and the errors), curves.csv (the fitted psi_d(i_d) and psi_q(i_q) curves) and the
-// figure flux-map.{pdf,png,svg} drawn from them by scripts/plot_flux_map.py.
+// figure flux-map.{pdf,png} drawn from them by scripts/plot_flux_map.py.
 #pragma once
 
 #include <ostream>

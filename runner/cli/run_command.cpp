@@ -39,6 +39,7 @@
 #include "runner/execution/run_identity.hpp"
 #include "runner/execution/study_lock.hpp"
 #include "runner/plugins/components.hpp"
+#include "runner/study/calibration.hpp"
 #include "runner/study/dry_run.hpp"
 #include "runner/study/study.hpp"
 #include "runner/study/study_file.hpp"
@@ -261,32 +262,46 @@ struct TimedOutcome {
     double wall_seconds = 0;
 };
 
+// What the progress counts: the runs to do (the study's or the shard's), each weighted by the
+// estimated cost the shards are balanced by (runner/distribution/shards.hpp), those the store holds
+// already done (it may hold runs of other studies, kept for a larger one: only this study's count).
+ProgressWork progress_work(const PreparedStudy& prepared, const StudyWriter& writer,
+                           const std::optional<std::vector<std::int64_t>>& shard_runs) {
+    std::vector<std::int64_t> runs;
+    if (shard_runs) {
+        runs = *shard_runs;
+    } else {
+        runs.resize(static_cast<std::size_t>(prepared.run_count()));
+        for (std::size_t id = 0; id < runs.size(); ++id)
+            runs[id] = static_cast<std::int64_t>(id);
+    }
+    return ProgressWork(estimated_run_costs(prepared), runs, writer.completed());
+}
+
 // The runs (this process's share under mpirun), with the progress display. A terminal gets the
 // bar (after a second, so short studies print nothing); a batch log gets a plain line every
-// --progress-interval seconds; --quiet gets neither.
+// --progress-interval seconds; --quiet gets neither. `after_runs_seconds`: the report's estimate,
+// which the ETA includes (0 without one).
 TimedOutcome run_with_progress(const PreparedStudy& prepared, StudyWriter& writer,
                                const po::variables_map& vm, int threads,
-                               const std::optional<std::vector<std::int64_t>>& shard_runs, bool quiet) {
+                               const std::optional<std::vector<std::int64_t>>& shard_runs, bool quiet,
+                               double after_runs_seconds) {
     const bool forced = vm["progress"].as<bool>();
     ProgressOptions shown;
     shown.terminal = forced || stderr_is_terminal();
     shown.delay_seconds = forced ? 0.0 : 1.0;
     shown.line_interval = vm["progress-interval"].as<double>();
-    const std::int64_t to_do =
-        shard_runs ? static_cast<std::int64_t>(shard_runs->size()) : prepared.run_count();
-    // The store may hold runs of other studies (kept for a larger one): count this study's only.
-    std::int64_t stored = static_cast<std::int64_t>(writer.completed().size());
-    if (shard_runs)
-        stored = std::count_if(shard_runs->begin(), shard_runs->end(),
-                               [&](std::int64_t id) { return writer.completed().count(id) != 0; });
-    ProgressBar progress(std::cerr, to_do, stored, shown);
+    // Costs only for a display: estimating them may run a few short calibration runs.
+    ProgressBar progress(std::cerr,
+                         quiet ? ProgressWork::uniform(0, 0) : progress_work(prepared, writer, shard_runs),
+                         shown, after_runs_seconds);
     RunnerOptions runner;
     runner.threads = threads;
     runner.stop = &stop_requested;
     runner.run_ids = shard_runs;
     if (!quiet)
-        runner.on_run_finished = [&progress](std::int64_t kept, std::int64_t, std::int64_t evaluations) {
-            progress.update(kept, evaluations);
+        runner.on_run_finished = [&progress](std::int64_t, std::int64_t, const RunRecord& record) {
+            progress.update(record.run_id, record.evaluations);
         };
 
     const auto started = std::chrono::steady_clock::now();
@@ -359,7 +374,12 @@ int run_into_directory(const PreparedStudy& prepared, const RunSettings& setting
     const bool quiet = vm["quiet"].as<bool>();
     if (!quiet)
         print_problem_warnings(prepared);
-    const TimedOutcome timed = run_with_progress(prepared, writer, vm, threads, shard_runs, quiet);
+    // The ETA includes the report the runs end with (a shard's comes after the merge).
+    const bool report = !shard && !vm["no-report"].as<bool>();
+    const double report_seconds =
+        report && !quiet ? estimate_report(prepared, !vm["no-figures"].as<bool>()).seconds() : 0.0;
+    const TimedOutcome timed =
+        run_with_progress(prepared, writer, vm, threads, shard_runs, quiet, report_seconds);
     const RunnerOutcome& outcome = timed.outcome;
     if (outcome.interrupted) {
         std::cerr << "interrupted: " << outcome.kept << " of " << outcome.total << " runs kept in "

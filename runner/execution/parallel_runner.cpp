@@ -68,7 +68,7 @@ RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const R
                     const std::lock_guard<std::mutex> lock(progress_mutex);
                     ++kept;
                     if (options.on_run_finished)
-                        options.on_run_finished(kept, outcome.total, record.evaluations);
+                        options.on_run_finished(kept, outcome.total, record);
                 }
             },
             tbb::simple_partitioner());

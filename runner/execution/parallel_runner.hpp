@@ -14,6 +14,7 @@
 #include <optional>
 #include <vector>
 
+#include "results/store/run_record.hpp"
 #include "runner/study/study.hpp"
 
 namespace mhb {
@@ -25,10 +26,10 @@ struct RunnerOptions {
     const std::atomic<bool>* stop = nullptr; // may be set from a signal handler
     // The runs to do (a shard of the study, possibly none); unset: every run of the study.
     std::optional<std::vector<std::int64_t>> run_ids;
-    // Called after each run is stored, with the runs now kept, the study's total and the
-    // evaluations that run spent. Calls are serialised (never two at once), but may come from any
-    // worker thread.
-    std::function<void(std::int64_t kept, std::int64_t total, std::int64_t evaluations)> on_run_finished;
+    // Called after each run is stored, with the runs now kept, the study's total and the run's
+    // record (its run id, the evaluations it spent). Calls are serialised (never two at once), but
+    // may come from any worker thread.
+    std::function<void(std::int64_t kept, std::int64_t total, const RunRecord& record)> on_run_finished;
 };
 
 struct RunnerOutcome {

@@ -22,13 +22,54 @@ std::string format_duration(double seconds) {
     return buf;
 }
 
-ProgressBar::ProgressBar(std::ostream& out, std::int64_t total, std::int64_t already, ProgressOptions options)
-    : out_(out), total_(total), already_(already), options_(options),
-      start_(std::chrono::steady_clock::now()), done_(already) {}
+ProgressWork::ProgressWork(std::vector<double> costs, const std::vector<std::int64_t>& runs,
+                           const std::set<std::int64_t>& stored)
+    : costs_(std::move(costs)), runs_(static_cast<std::int64_t>(runs.size())) {
+    for (const std::int64_t id : runs) {
+        const double cost = id >= 0 && static_cast<std::size_t>(id) < costs_.size()
+                                ? costs_[static_cast<std::size_t>(id)]
+                                : 1.0;
+        total_ += cost;
+        if (stored.count(id) != 0) {
+            done_ += cost;
+            ++runs_done_;
+        }
+    }
+}
 
-void ProgressBar::update(std::int64_t done, std::int64_t evaluations) {
+ProgressWork ProgressWork::uniform(std::int64_t runs, std::int64_t stored) {
+    std::vector<std::int64_t> ids(static_cast<std::size_t>(std::max<std::int64_t>(runs, 0)));
+    std::set<std::int64_t> finished;
+    for (std::int64_t i = 0; i < runs; ++i) {
+        ids[static_cast<std::size_t>(i)] = i;
+        if (i < stored)
+            finished.insert(i);
+    }
+    return ProgressWork(std::vector<double>(ids.size(), 1.0), ids, finished);
+}
+
+void ProgressWork::finished(std::int64_t run_id) {
+    const double cost = run_id >= 0 && static_cast<std::size_t>(run_id) < costs_.size()
+                            ? costs_[static_cast<std::size_t>(run_id)]
+                            : 1.0;
+    done_ = std::min(total_, done_ + cost);
+    done_here_ += cost;
+    runs_done_ = std::min(runs_, runs_done_ + 1);
+    ++runs_done_here_;
+}
+
+double ProgressWork::fraction_done() const {
+    return total_ > 0 ? std::min(1.0, done_ / total_) : 1.0;
+}
+
+ProgressBar::ProgressBar(std::ostream& out, ProgressWork work, ProgressOptions options,
+                         double after_runs_seconds)
+    : out_(out), work_(std::move(work)), options_(options), after_runs_seconds_(after_runs_seconds),
+      start_(std::chrono::steady_clock::now()) {}
+
+void ProgressBar::update(std::int64_t run_id, std::int64_t evaluations) {
     const std::lock_guard<std::mutex> lock(mutex_);
-    done_ = std::max(done_, done);
+    work_.finished(run_id);
     evaluations_ += static_cast<double>(evaluations);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     // A terminal is redrawn a few times a second (and at the last run); a log gets a line per interval.
@@ -36,7 +77,8 @@ void ProgressBar::update(std::int64_t done, std::int64_t evaluations) {
     const bool due = last_draw_ < 0
                          ? elapsed >= std::max(options_.delay_seconds, options_.terminal ? 0.0 : interval)
                          : elapsed - last_draw_ >= interval;
-    if (elapsed < options_.delay_seconds || !(due || (options_.terminal && shown_ && done_ == total_)))
+    const bool last = work_.runs_done() == work_.runs();
+    if (elapsed < options_.delay_seconds || !(due || (options_.terminal && shown_ && last)))
         return;
     draw(elapsed);
 }
@@ -52,29 +94,41 @@ void ProgressBar::finish() {
     shown_ = false;
 }
 
+// "0:21 (runs 0:15, report 0:06)": the runs still to do at this session's pace of work (cost per
+// second), then what follows them; "--:--" until a run of this session has finished.
+std::string ProgressBar::eta_text(double elapsed) const {
+    if (work_.runs_done_here() == 0 || work_.done_here() <= 0)
+        return "--:--";
+    const double runs = elapsed / work_.done_here() * work_.remaining();
+    if (after_runs_seconds_ <= 0)
+        return format_duration(runs);
+    return format_duration(runs + after_runs_seconds_) + " (runs " + format_duration(runs) + ", report " +
+           format_duration(after_runs_seconds_) + ")";
+}
+
 void ProgressBar::draw(double elapsed) {
-    // Rates and the ETA extrapolate this session's pace; resumed runs took no time here.
-    const std::int64_t done_here = done_ - already_;
-    const double runs_per_second = elapsed > 0 ? static_cast<double>(done_here) / elapsed : 0.0;
+    // Rates extrapolate this session's pace; resumed runs took no time here.
+    const double runs_per_second = elapsed > 0 ? static_cast<double>(work_.runs_done_here()) / elapsed : 0.0;
     const double evaluations_per_second = elapsed > 0 ? evaluations_ / elapsed : 0.0;
-    std::string eta = "--:--";
-    if (done_here > 0)
-        eta = format_duration(elapsed / static_cast<double>(done_here) * static_cast<double>(total_ - done_));
-    const double fraction = total_ > 0 ? static_cast<double>(done_) / static_cast<double>(total_) : 1.0;
-    char line[256];
+    const std::string eta = eta_text(elapsed);
+    const double fraction = work_.fraction_done();
+    const auto done = static_cast<long long>(work_.runs_done());
+    const auto total = static_cast<long long>(work_.runs());
+    char line[320];
     if (options_.terminal) {
-        constexpr int width = 30;
+        constexpr int width = 20;
         std::string bar(static_cast<std::size_t>(fraction * width), '#');
         bar.resize(width, '.');
         std::snprintf(line, sizeof line,
-                      "\r[%s] %lld/%lld runs  %.3g runs/s  %.3g evals/s  elapsed %s  eta %s ", bar.c_str(),
-                      static_cast<long long>(done_), static_cast<long long>(total_), runs_per_second,
-                      evaluations_per_second, format_duration(elapsed).c_str(), eta.c_str());
+                      "\r[%s] %lld/%lld runs %.0f%%  %.3g runs/s  %.3g evals/s  elapsed %s  eta %s ",
+                      bar.c_str(), done, total, 100.0 * fraction, runs_per_second, evaluations_per_second,
+                      format_duration(elapsed).c_str(), eta.c_str());
     } else {
         std::snprintf(line, sizeof line,
-                      "progress: %lld/%lld runs (%.0f%%), %.3g runs/s, %.3g evals/s, elapsed %s, eta %s\n",
-                      static_cast<long long>(done_), static_cast<long long>(total_), 100.0 * fraction,
-                      runs_per_second, evaluations_per_second, format_duration(elapsed).c_str(), eta.c_str());
+                      "progress: %lld/%lld runs (%.0f%% of the work), %.3g runs/s, %.3g evals/s, elapsed %s, "
+                      "eta %s\n",
+                      done, total, 100.0 * fraction, runs_per_second, evaluations_per_second,
+                      format_duration(elapsed).c_str(), eta.c_str());
     }
     out_ << line << std::flush;
     shown_ = true;

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 #include <thread>
 
+#include "problems/core/rng.hpp"
 #include "runner/run/execute_run.hpp"
 
 namespace mhb {
@@ -168,22 +170,51 @@ StudyEstimate estimate_study(const PreparedStudy& study, int threads, std::size_
 namespace {
 
 // CPU seconds of one figure of each kind, PDF and PNG, measured on the project's 2-vCPU VM (AMD
-// EPYC, Debian 12, matplotlib 3.6) from the paper and ablation presets' reports with
-//   python3 -c 'import plot_study as p; p.import_matplotlib(); ...; job.draw(); fig.savefig(...)'
-// (each kind's median; a figure's cost grows a little with the algorithms it draws).
-constexpr double figure_startup_seconds = 0.9; // python3, matplotlib and the warm-up figure
-constexpr double convergence_seconds = 0.12;   // + per algorithm:
-constexpr double convergence_per_algorithm = 0.01;
-constexpr double parameters_seconds = 0.35; // four panels; + per algorithm:
-constexpr double parameters_per_algorithm = 0.03;
-constexpr double final_values_seconds = 0.12;
-constexpr double ecdf_seconds = 0.15;
-constexpr double ranks_seconds = 0.1;    // critical difference, relative gaps
-constexpr double effects_seconds = 0.25; // each of the three figures of a factorial design
+// EPYC, Debian 12, matplotlib 3.6) from the paper, ablation and cec2017-smoke presets' reports with
+// the script's own jobs (`p.plan_folder(dir)`, then each job's draw and both savefigs, timed by
+// time.process_time, MHB_PLOT_WORKERS=1), each kind's median per panel; a panel's cost grows a little
+// with the algorithms it draws. Kinds drawn per problem are panels of one figure (plot_study.py's
+// MOST_PANELS), so these are per panel. On another machine they are scaled by machine_speed_ratio().
+constexpr double figure_startup_seconds = 0.7; // python3, matplotlib and the warm-up figure
+constexpr double convergence_seconds = 0.09;   // a panel; + per algorithm:
+constexpr double convergence_per_algorithm = 0.002;
+constexpr double parameters_seconds = 0.245; // four panels; + per algorithm:
+constexpr double parameters_per_algorithm = 0.015;
+constexpr double final_values_seconds = 0.04; // a panel; + per algorithm:
+constexpr double final_values_per_algorithm = 0.01;
+constexpr double ecdf_seconds = 0.14;    // the problems pooled
+constexpr double ranks_seconds = 0.07;   // critical difference, relative gaps
+constexpr double effects_seconds = 0.16; // each of the three figures of a factorial design
 // The tables and curve data: measured `mhbench report --no-figures` of the paper (60 runs) and
 // ablation (960 runs) presets.
 constexpr double tables_seconds_base = 0.05;
 constexpr double tables_seconds_per_run = 0.0004;
+// The figures' reference work (reference_work_seconds) took this long where the costs above were
+// measured: its best of three, on the same VM, idle apart from it.
+constexpr double reference_work_seconds_there = 0.0063;
+// As many figures of one kind as plot_study.py draws as panels of one figure (its MOST_PANELS).
+constexpr std::size_t most_panels = 6;
+
+// A fixed piece of scalar work like a figure script's (a Rastrigin sum over points of a fixed
+// stream, a few milliseconds), timed here: the best of three, since a busy machine only slows it.
+double reference_work_seconds() {
+    double best = 1e300;
+    for (int repeat = 0; repeat < 3; ++repeat) {
+        Rng rng(1);
+        volatile double sink = 0; // the work must not be optimised away
+        const auto started = std::chrono::steady_clock::now();
+        double sum = 0;
+        for (int i = 0; i < (1 << 18); ++i) {
+            const double x = rng.uniform(-5.12, 5.12);
+            sum += x * x - 10.0 * std::cos(2.0 * 3.141592653589793 * x) + 10.0;
+        }
+        sink = sum;
+        (void)sink;
+        best =
+            std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    }
+    return best;
+}
 
 // Whether the algorithms look like a 2^k on/off grid (labels such as itlbo[T+S-O+]): the report
 // then analyses it as a factorial design, with three figures.
@@ -212,31 +243,52 @@ ReportEstimate estimate_report(const PreparedStudy& study, bool figures) {
     if (!figures)
         return estimate;
     const double algorithms = static_cast<double>(study.algorithms.size());
+    const std::size_t problems = study.problems.size();
+    // Figures of a kind drawn per problem: one with a panel each for 2 to most_panels problems.
+    const auto figures_of = [](std::size_t count) {
+        return static_cast<std::int64_t>(count >= 2 && count <= most_panels ? 1 : count);
+    };
+    std::size_t known = 0, identified = 0;
+    for (const auto& p : study.problems) {
+        known += p.problem->known_optimum().has_value() ? 1U : 0U;
+        identified += p.problem->parameter_names().empty() ? 0U : 1U;
+    }
     std::int64_t convergence = 0, parameters = 0, finals = 0, ecdf = 0, ranks = 0, effects = 0;
+    double panels = 0; // of the kinds drawn per problem, weighted by their cost
     for (const StudyBudget& budget : study.study.budgets) {
-        for (const auto& p : study.problems) {
-            const bool known = p.problem->known_optimum().has_value();
-            convergence += budget.max_iterations ? 2 : 1; // by iteration only where iterations count
-            parameters += p.problem->parameter_names().empty() ? 0 : 1;
-            finals += 1;
-            ecdf += (known ? 1 : 0) + (known && (budget.target_error || budget.relative_target) ? 1 : 0);
-        }
-        ranks += study.problems.size() >= 2 && study.algorithms.size() >= 2 ? 1 : 0;
+        const std::int64_t convergence_kinds =
+            budget.max_iterations ? 2 : 1; // by iteration where iterations count
+        convergence += convergence_kinds * figures_of(problems);
+        panels +=
+            static_cast<double>(convergence_kinds) * static_cast<double>(problems) *
+                (convergence_seconds + convergence_per_algorithm * algorithms) +
+            static_cast<double>(problems) * (final_values_seconds + final_values_per_algorithm * algorithms);
+        parameters += static_cast<std::int64_t>(identified);
+        finals += figures_of(problems);
+        // Pooled over the problems: COCO's targets where f* is known (two problems at least), and
+        // the study's own target when it has one.
+        ecdf +=
+            (known >= 2 ? 1 : 0) + (known >= 1 && (budget.target_error || budget.relative_target) ? 1 : 0);
+        ranks += problems >= 2 && study.algorithms.size() >= 2 ? 1 : 0;
         effects += factorial_grid(study) ? 3 : 0;
     }
     estimate.figures = {{"convergence", convergence},   {"parameters", parameters},
                         {"final_values", finals},       {"ecdf", ecdf},
                         {"critical_difference", ranks}, {"effects", effects}};
     const double cpu =
-        static_cast<double>(convergence) * (convergence_seconds + convergence_per_algorithm * algorithms) +
+        panels +
         static_cast<double>(parameters) * (parameters_seconds + parameters_per_algorithm * algorithms) +
-        static_cast<double>(finals) * final_values_seconds + static_cast<double>(ecdf) * ecdf_seconds +
-        static_cast<double>(ranks) * ranks_seconds + static_cast<double>(effects) * effects_seconds;
+        static_cast<double>(ecdf) * ecdf_seconds + static_cast<double>(ranks) * ranks_seconds +
+        static_cast<double>(effects) * effects_seconds;
+    // Measured on the reference VM: scaled by how much slower or faster this machine does the same
+    // work, as the runs' estimate times the study's own runs here.
+    estimate.speed_ratio = reference_work_seconds() / reference_work_seconds_there;
     // The script draws on as many workers as the process may use CPUs (plot_study.py).
     const double workers = std::max(1.0, static_cast<double>(std::thread::hardware_concurrency()));
     estimate.figures_seconds =
-        figure_startup_seconds +
-        cpu / std::min(workers, std::max(1.0, static_cast<double>(estimate.figure_count())));
+        estimate.speed_ratio *
+        (figure_startup_seconds +
+         cpu / std::min(workers, std::max(1.0, static_cast<double>(estimate.figure_count()))));
     return estimate;
 }
 

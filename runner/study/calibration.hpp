@@ -57,13 +57,15 @@ struct ReportEstimate {
     double tables_seconds = 0;
     std::vector<std::pair<std::string, std::int64_t>> figures; // kind and count, in the script's order
     double figures_seconds = 0; // wall time: the interpreter's start, then the figures on `workers`
+    double speed_ratio = 1;     // this machine's time for the figures' reference work over the reference VM's
     [[nodiscard]] std::int64_t figure_count() const;
     [[nodiscard]] double seconds() const { return tables_seconds + figures_seconds; }
 };
 
 // The report's estimate, `figures` false for --no-figures. Per-kind costs are measured once on the
-// project's 2-vCPU machine (calibration.cpp says how) and used as they are: a rough figure, like
-// the runs' estimate, but no longer missing from it.
+// project's 2-vCPU machine (calibration.cpp says how) and scaled by this machine's speed: the time
+// of a fixed piece of work here over its time there (a few milliseconds, best of three). A rough
+// figure, like the runs' estimate.
 ReportEstimate estimate_report(const PreparedStudy& study, bool figures);
 
 } // namespace mhb

@@ -160,7 +160,10 @@ TEST(FluxMapCli, IdentifyWritesItsNumbersAndTheyAgreeWithTheReport) {
     EXPECT_NEAR(std::stod(r.out.substr(at + 10)), f, 1e-9 * f);
     EXPECT_EQ(lines_of(run_shell("cat " + shell_quoted(dir / "curves.csv")).out).size(), 1u + 10u * 121u);
     if (r.out.find("figure: ") != std::string::npos) { // drawn when a Python with matplotlib is found
-        EXPECT_TRUE(std::filesystem::exists(dir / "flux-map.svg"));
+        EXPECT_TRUE(std::filesystem::exists(dir / "flux-map.pdf"));
+        EXPECT_TRUE(std::filesystem::exists(dir / "flux-map.png"));
+        EXPECT_FALSE(
+            std::filesystem::exists(dir / "flux-map.svg")); // PDF and PNG as plot_study.py's (issue 37)
     }
 }
 

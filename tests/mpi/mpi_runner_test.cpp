@@ -94,9 +94,9 @@ TEST(MpiRunner, TwoRanksWriteTheFilesOneProcessWritesAndShareTheRuns) {
     RunnerOptions options;
     options.threads = 2;
     std::vector<std::int64_t> progress;
-    options.on_run_finished = [&](std::int64_t kept, std::int64_t total, std::int64_t evaluations) {
+    options.on_run_finished = [&](std::int64_t kept, std::int64_t total, const RunRecord& record) {
         EXPECT_EQ(total, 24);
-        EXPECT_GT(evaluations, 0);
+        EXPECT_GT(record.evaluations, 0);
         progress.push_back(kept);
     };
     DistributedStats stats;
@@ -139,7 +139,7 @@ TEST(MpiRunner, AStopOnRankZeroInterruptsEveryRankAndTheStudyResumes) {
     RunnerOptions options;
     options.threads = 1;
     options.stop = &stop;
-    options.on_run_finished = [&](std::int64_t kept, std::int64_t, std::int64_t) {
+    options.on_run_finished = [&](std::int64_t kept, std::int64_t, const RunRecord&) {
         if (kept >= 3)
             stop = true;
     };
@@ -204,7 +204,7 @@ TEST(MpiRunner, AnErrorOnRankZeroEndsTheStudyOnEveryRank) {
     const PreparedStudy study = make_study();
     const fs::path dir = fresh("error");
     RunnerOptions options;
-    options.on_run_finished = [](std::int64_t kept, std::int64_t, std::int64_t) {
+    options.on_run_finished = [](std::int64_t kept, std::int64_t, const RunRecord&) {
         if (kept == 2)
             throw std::runtime_error("the progress display failed");
     };

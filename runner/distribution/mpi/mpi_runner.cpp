@@ -102,7 +102,7 @@ private:
             writer_.append(record, wall_seconds);
             ++kept_;
             if (options_.on_run_finished)
-                options_.on_run_finished(kept_, outcome_.total, record.evaluations);
+                options_.on_run_finished(kept_, outcome_.total, record);
         } catch (...) {
             error_ = std::current_exception();
         }

@@ -64,41 +64,79 @@ TEST(Progress, FormatsDurations) {
 
 TEST(Progress, DrawsRunsRatesAndEtaWhenShownAndNothingBeforeTheDelay) {
     std::ostringstream shown;
-    ProgressBar bar(shown, 4, 1, ProgressOptions{true, 0.0, 10.0});
-    bar.update(4, 1000); // the last run always draws
+    ProgressBar bar(shown, ProgressWork::uniform(4, 1), ProgressOptions{true, 0.0, 10.0});
+    bar.update(1, 1000);
+    bar.update(2, 1000);
+    bar.update(3, 1000); // the last run always draws
     bar.finish();
     const std::string text = shown.str();
-    EXPECT_EQ(text.rfind("\r[##############################] 4/4 runs  ", 0), 0u) << text;
+    EXPECT_NE(text.find("\r[####################] 4/4 runs 100%  "), std::string::npos) << text;
     EXPECT_NE(text.find(" runs/s  "), std::string::npos) << text;
     EXPECT_NE(text.find(" evals/s  elapsed 0:00  eta 0:00"), std::string::npos) << text;
     EXPECT_EQ(text.back(), '\n');
 
     std::ostringstream quiet;
-    ProgressBar late(quiet, 4, 0, ProgressOptions{true, 3600.0, 10.0});
-    late.update(1);
-    late.update(4);
+    ProgressBar late(quiet, ProgressWork::uniform(4, 0), ProgressOptions{true, 3600.0, 10.0});
+    for (std::int64_t id = 0; id < 4; ++id)
+        late.update(id);
     late.finish();
     EXPECT_EQ(quiet.str(), "");
 }
 
 TEST(Progress, ABatchLogGetsAPlainLinePerIntervalAndNoCarriageReturn) {
     std::ostringstream log;
-    ProgressBar lines(log, 3, 0, ProgressOptions{false, 0.0, 1e-9});
+    ProgressBar lines(log, ProgressWork::uniform(3, 0), ProgressOptions{false, 0.0, 1e-9});
+    lines.update(0, 50);
     lines.update(1, 50);
-    lines.update(2, 50);
     lines.finish();
     const std::string text = log.str();
     EXPECT_EQ(text.find('\r'), std::string::npos);
-    EXPECT_EQ(text.rfind("progress: 1/3 runs (33%), ", 0), 0u) << text;
-    EXPECT_NE(text.find("\nprogress: 2/3 runs (67%), "), std::string::npos) << text;
+    EXPECT_EQ(text.rfind("progress: 1/3 runs (33% of the work), ", 0), 0u) << text;
+    EXPECT_NE(text.find("\nprogress: 2/3 runs (67% of the work), "), std::string::npos) << text;
     EXPECT_NE(text.find(" evals/s, elapsed 0:00, eta "), std::string::npos) << text;
     // Within the interval nothing more is written.
     std::ostringstream sparse;
-    ProgressBar rare(sparse, 3, 0, ProgressOptions{false, 0.0, 3600.0});
-    rare.update(1, 5);
-    rare.update(3, 5);
+    ProgressBar rare(sparse, ProgressWork::uniform(3, 0), ProgressOptions{false, 0.0, 3600.0});
+    rare.update(0, 5);
+    rare.update(2, 5);
     rare.finish();
     EXPECT_EQ(sparse.str(), "");
+}
+
+// Two runs of very different cost: finishing the cheap one moves the work by its share (1%), not
+// by half; the expensive one then completes it. A stored run counts as done from the start.
+TEST(Progress, RunsWeighByTheirCostNotTheirCount) {
+    ProgressWork work({1.0, 99.0}, {0, 1}, {});
+    EXPECT_EQ(work.fraction_done(), 0.0);
+    work.finished(0);
+    EXPECT_DOUBLE_EQ(work.fraction_done(), 0.01);
+    EXPECT_EQ(work.runs_done(), 1);
+    EXPECT_DOUBLE_EQ(work.remaining(), 99.0);
+    work.finished(1);
+    EXPECT_DOUBLE_EQ(work.fraction_done(), 1.0);
+
+    const ProgressWork resumed({1.0, 99.0, 5.0}, {1, 2}, {1, 7}); // run 0 is another shard's; 7 not counted
+    EXPECT_EQ(resumed.runs(), 2);
+    EXPECT_EQ(resumed.runs_done(), 1);
+    EXPECT_DOUBLE_EQ(resumed.fraction_done(), 99.0 / 104.0);
+    EXPECT_EQ(resumed.done_here(), 0.0); // a resumed run took no time in this session
+
+    std::ostringstream log;
+    ProgressBar lines(log, ProgressWork({1.0, 99.0}, {0, 1}, {}), ProgressOptions{false, 0.0, 1e-9});
+    lines.update(0, 10);
+    EXPECT_EQ(log.str().rfind("progress: 1/2 runs (1% of the work), ", 0), 0u) << log.str();
+}
+
+// The ETA adds what follows the runs: "eta T (runs R, report S)" with T = R + S.
+TEST(Progress, TheEtaIncludesTheReportAfterTheRuns) {
+    std::ostringstream log;
+    ProgressBar lines(log, ProgressWork::uniform(2, 0), ProgressOptions{false, 0.0, 1e-9}, 125.0);
+    lines.update(0);
+    const std::string text = log.str();
+    const auto at = text.find(", eta ");
+    ASSERT_NE(at, std::string::npos) << text;
+    EXPECT_NE(text.find(" (runs ", at), std::string::npos) << text;
+    EXPECT_TRUE(text.ends_with(", report 2:05)\n")) << text;
 }
 
 } // namespace

@@ -53,7 +53,7 @@ TEST(ParallelRunner, RunsEveryRunOnceAndFinishesTheStudy) {
     RunnerOptions options;
     options.threads = 2;
     std::vector<std::int64_t> progress;
-    options.on_run_finished = [&](std::int64_t kept, std::int64_t total, std::int64_t) {
+    options.on_run_finished = [&](std::int64_t kept, std::int64_t total, const RunRecord&) {
         EXPECT_EQ(total, 16);
         progress.push_back(kept);
     };
@@ -128,7 +128,7 @@ TEST(ParallelRunner, CancelledAfterKRunsThenResumedMatchesAnUninterruptedStudy) 
     RunnerOptions cancelling;
     cancelling.threads = 1; // one thread: exactly K runs are kept
     cancelling.stop = &stop;
-    cancelling.on_run_finished = [&](std::int64_t kept, std::int64_t, std::int64_t) {
+    cancelling.on_run_finished = [&](std::int64_t kept, std::int64_t, const RunRecord&) {
         if (kept == 5)
             stop.store(true);
     };

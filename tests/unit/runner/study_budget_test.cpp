@@ -369,5 +369,32 @@ TEST(StudyBudget, IdentitiesOfExistingStudiesAreUnchanged) {
               "PSO (w=0.6) | bbob:dim=2,f=2,instance=1 | evaluations=300,target=1e-08 | 1");
 }
 
+// The dry run's report counts the figures as plot_study.py plans them (issue 37): a kind drawn per
+// problem is one figure with a panel each for two to six problems, one per problem beyond; the
+// fixed-target ECDF pools the problems, and the study's target adds one. The figure costs are scaled
+// by this machine's speed, a positive ratio.
+TEST(StudyBudget, TheReportEstimateCountsTheFiguresAsTheScriptPlansThem) {
+    Study s = sphere_study("iterations=3");
+    s.problems = {"sphere:dim=2", "rastrigin:dim=2"};
+    s.budgets.push_back(parse_budget("evaluations=100,target=1e-8"));
+    const ReportEstimate two = estimate_report(prepare_study(s), true);
+    const std::vector<std::pair<std::string, std::int64_t>> expected{
+        {"convergence", 3}, // by evaluations at both budgets, by iteration at the iteration budget
+        {"parameters", 0},
+        {"final_values", 2},
+        {"ecdf", 3}, // COCO's targets twice, the study's once
+        {"critical_difference", 2},
+        {"effects", 0}};
+    EXPECT_EQ(two.figures, expected);
+    EXPECT_GT(two.speed_ratio, 0.0);
+    EXPECT_GT(two.figures_seconds, 0.0);
+
+    s.problems = {"sphere:dim=2,shift=on,instance=1-6", "rastrigin:dim=2"};
+    const ReportEstimate seven = estimate_report(prepare_study(s), true);
+    EXPECT_EQ(seven.figures[0].second, 3 * 7); // seven problems: a figure each
+    EXPECT_EQ(seven.figures[2].second, 2 * 7);
+    EXPECT_EQ(estimate_report(prepare_study(s), false).figure_count(), 0); // --no-figures
+}
+
 } // namespace
 } // namespace mhb
