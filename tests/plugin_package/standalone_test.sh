@@ -49,7 +49,7 @@ grep -q '^ *paper' "$work/studies.txt" || { echo "the presets are not listed:" >
 if /usr/bin/python3 -c 'import matplotlib' 2> /dev/null; then
     ls "$work"/study/report/figures/*.png > /dev/null 2>&1 ||
         { echo "the installed mhbench drew no figure of the study" >&2; exit 1; }
-    [ -f "$work/fluxmap/flux-map.pdf" ] ||
+    [ -f "$work/fluxmap/flux-map.pdf" ] && [ -f "$work/fluxmap/flux-map.png" ] ||
         { echo "the installed mhbench drew no flux-map figure:" >&2; cat "$work/identify.txt" >&2; exit 1; }
     echo "figures drawn from the moved prefix with the trees hidden"
 else
