@@ -14,14 +14,18 @@ namespace fs = std::filesystem;
 const std::vector<FigureKind>& figure_kinds() {
     static const std::vector<FigureKind> kinds = {
         {"convergence_iteration_", "Convergence by iteration",
-         "Median best-so-far f per iteration; the band is the interquartile range (order statistics, as "
-         "meaningful on the log axis as on a linear one)."},
+         "Median best-so-far gap f - f* (f where f* is unknown, as the axis says) per iteration; the band "
+         "is the interquartile range (order statistics, as meaningful on the log axis as on a linear "
+         "one)."},
         {"convergence_evaluations_", "Convergence by evaluations",
-         "Median best-so-far f against evaluations (log-log); the band is the interquartile range."},
-        {"parameter_", "Identified parameters",
-         "Mean best-so-far parameter per iteration (band: one standard deviation); dashed: the true value, "
-         "dotted: the least-squares optimum."},
-        {"final_values_", "Final values", "Box plots of the final best f of each algorithm's runs."},
+         "Median best-so-far gap f - f* (f where f* is unknown) against evaluations (log-log); the band is "
+         "the interquartile range."},
+        {"parameters_", "Identified parameters",
+         "Mean best-so-far parameter (band: one standard deviation) per iteration, or against the mean "
+         "evaluations at an evaluation budget; dashed: the true value, dotted: the least-squares "
+         "optimum."},
+        {"final_values_", "Final values",
+         "Box plots of the final gap f - f* (or f) of each algorithm's runs."},
         {"ecdf_targets_", "Fixed-target ECDFs",
          "Fraction of (run, target) pairs reached within a number of evaluations, over COCO's targets "
          "f - f* = 1e2 ... 1e-8."},
