@@ -240,8 +240,9 @@ std::string report_readme(const std::vector<Table>& tables, const ReportFiles& f
     if (files.budget_txt)
         out += "- `budget.txt`: the budget every run of this report had.\n";
     if (files.combined)
-        out += "- `report.md`, `report.tex`: every table in one file; `index.html`: the verdict first, the key "
-               "figures, every table and figure, the study's context last.\n";
+        out +=
+            "- `report.md`, `report.tex`: every table in one file; `index.html`: the verdict first, the key "
+            "figures, every table and figure, the study's context last.\n";
     return out;
 }
 
@@ -254,7 +255,8 @@ std::string budgets_readme(const std::vector<std::string>& budgets, const std::v
     out +=
         "\n- `budgets.csv` (budget,directory): the same list.\n"
         "- `report.md`, `report.tex`: every table of every budget, a section per budget; `index.html`: the "
-        "verdict and key figures of every budget, linking a page per budget (`budget_<folder>.html`) with its "
+        "verdict and key figures of every budget, linking a page per budget (`budget_<folder>.html`) with "
+        "its "
         "tables and figures.\n";
     return out;
 }
