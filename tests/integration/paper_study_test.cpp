@@ -25,8 +25,8 @@ std::size_t count_of(const std::string& text, const std::string& word) {
 
 TEST(PaperStudy, PrintsTablesTwoAndThreeThatAgreeWithTheRunRecords) {
     const fs::path dir = fresh("paper_small");
-    const auto r =
-        run_mhbench("run --study paper --runs 4 --threads 2 --no-figures --tables --out '" + dir.string() + "'");
+    const auto r = run_mhbench("run --study paper --runs 4 --threads 2 --no-figures --tables --out '" +
+                               dir.string() + "'");
     ASSERT_EQ(r.exit_code, 0) << r.err;
 
     // Both tables are printed, with the published numbers beside ours.
