@@ -1000,7 +1000,10 @@ def box_label_room(rows):
     if len(labels) <= 3:
         return 0.0
     longest = max(len(label) for label in labels)
-    return 0.035 * longest * math.sin(math.radians(BOX_LABEL_ROTATION)) + 0.05
+    # About 0.05 in per character of the serif face at 7 pt (measured on "LSHADE-cnEpSin", whose end
+    # was cut off at 0.035), plus the line's own height across the slant.
+    angle = math.radians(BOX_LABEL_ROTATION)
+    return 0.05 * longest * math.sin(angle) + 0.1 * math.cos(angle) + 0.05
 
 
 def ecdf_figure(job, folder, curves, ylabel, title):
