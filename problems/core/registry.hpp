@@ -59,9 +59,9 @@ public:
     // `kind` names what is registered ("algorithm", "problem") in error messages.
     explicit Registry(std::string kind) : kind_(std::move(kind)) {}
 
-    void add(Entry entry, DisplayName display = {}) {
+    void add(Entry entry, const DisplayName& display = {}) {
         if (!display.name.empty() || !display.parameter.empty())
-            entry.display = std::move(display);
+            entry.display = display;
         for (const auto& e : entries_)
             if (e.name == entry.name)
                 throw std::logic_error(kind_ + " '" + entry.name + "' is registered twice");
