@@ -148,12 +148,16 @@ COMMON_CHARACTERS = "".join(chr(c) for c in range(32, 127)) + "\u207b\u2070\u00b
 
 
 def cache_font_subsets():
+    """Wraps matplotlib's private subsetting function (3.6's `_backend_pdf_ps.get_glyphs_subset`);
+    where another matplotlib has no such function, figures are drawn as matplotlib makes them."""
     try:
         import io
         from matplotlib.backends import _backend_pdf_ps
     except ImportError:
         return
-    make_subset = _backend_pdf_ps.get_glyphs_subset
+    make_subset = getattr(_backend_pdf_ps, "get_glyphs_subset", None)
+    if make_subset is None:
+        return
     cached = {}
 
     def get_glyphs_subset(fontfile, characters):
