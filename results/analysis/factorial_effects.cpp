@@ -94,23 +94,23 @@ std::vector<double> responses(const RawBlock& block, ResponseScale scale) {
     return out;
 }
 
-double median_of(std::vector<double> values) {
-    if (values.empty())
-        return 0.0;
-    std::sort(values.begin(), values.end());
-    return quantile_sorted(values, 0.5);
-}
-
-std::string reading(const EffectEstimate& e, const std::vector<std::string>& factors, ResponseScale scale,
-                    double alpha) {
+EffectDirection direction(const EffectEstimate& e, double alpha) {
     if (!(e.adjusted_p < alpha) || e.mean == 0.0)
-        return "no significant effect";
+        return EffectDirection::none;
     // The signed-rank statistic's side of its null mean (n (n + 1) / 4 over the non-zero effects).
     double nonzero = 0.0;
     for (double v : e.per_block)
         nonzero += v != 0.0 ? 1.0 : 0.0;
     const double centred = e.test.statistic - nonzero * (nonzero + 1.0) / 4.0;
     if ((centred < 0.0) != (e.mean < 0.0))
+        return EffectDirection::disagree;
+    return e.mean < 0 ? EffectDirection::lowers : EffectDirection::raises;
+}
+
+std::string reading(const EffectEstimate& e, const std::vector<std::string>& factors, ResponseScale scale) {
+    if (e.direction == EffectDirection::none)
+        return "no significant effect";
+    if (e.direction == EffectDirection::disagree)
         return "significant, but the mean and the signed ranks disagree in direction: inspect the blocks";
     const std::string amount = format_number(std::fabs(e.mean), 3);
     const std::string response =
@@ -321,7 +321,8 @@ EffectAnalysis analyse_factorial_blocks(const std::vector<std::vector<double>>& 
     const auto adjusted = holm_adjust(raw);
     for (std::size_t i = 0; i < out.effects.size(); ++i) {
         out.effects[i].adjusted_p = adjusted[i];
-        out.effects[i].reading = reading(out.effects[i], factors, scale, alpha);
+        out.effects[i].direction = direction(out.effects[i], alpha);
+        out.effects[i].reading = reading(out.effects[i], factors, scale);
     }
     // Level means: per block the mean over the variants at the level(s), then the mean over blocks.
     const auto level_mean = [&](const auto& selects) {

@@ -71,6 +71,10 @@ std::string scale_name(ResponseScale scale); // "log10(f - f*)" or "within-block
 double gap_floor(double f_opt);
 double gap_response(double f, double f_opt);
 
+// What an effect's test says: no significant effect, the switch on lowers or raises the response,
+// or significant with the mean and the signed ranks pointing opposite ways.
+enum class EffectDirection { none, lowers, raises, disagree };
+
 struct EffectEstimate {
     std::string name;                 // "tutorial", or "stepwise x tutorial" for an interaction
     std::vector<std::size_t> factors; // one index (main effect) or two (interaction) into factors
@@ -79,7 +83,8 @@ struct EffectEstimate {
     double median = 0.0;
     TestResult test; // Wilcoxon signed-rank of the per-block effects against 0
     double adjusted_p = 1.0;
-    std::string reading;
+    EffectDirection direction = EffectDirection::none;
+    std::string reading; // `direction` in words
 };
 
 // Mean response (over blocks) of the variants at one level of a factor, or at one pair of levels

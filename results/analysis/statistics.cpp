@@ -35,6 +35,13 @@ double standard_deviation(const std::vector<double>& values) {
     return std::sqrt((squares - deviations * deviations / n) / (n - 1.0));
 }
 
+double median_of(std::vector<double> values) {
+    if (values.empty())
+        return 0.0;
+    std::sort(values.begin(), values.end());
+    return quantile_sorted(values, 0.5);
+}
+
 double quantile_sorted(const std::vector<double>& sorted, double p) {
     if (sorted.empty())
         throw std::invalid_argument("quantile of an empty sample");

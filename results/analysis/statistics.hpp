@@ -39,6 +39,8 @@ double standard_deviation(const std::vector<double>& values);
 // Quantile of probability p in [0, 1], linear interpolation between order statistics
 // (Hyndman & Fan type 7, R's and NumPy's default). `sorted` must be sorted ascending.
 double quantile_sorted(const std::vector<double>& sorted, double p);
+// The median (type 7) of an unsorted sample; 0 for an empty one.
+double median_of(std::vector<double> values);
 
 // One run as the ERT sees it: whether it reached the target and the evaluations it spent
 // (to the target if it did, in total otherwise).

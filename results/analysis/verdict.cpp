@@ -12,11 +12,6 @@ namespace mhb {
 
 namespace {
 
-double median_of_sample(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return quantile_sorted(values, 0.5);
-}
-
 RankedAlgorithm ranked_entry(const StudyIndex& index, const RunGroup& group) {
     RankedAlgorithm entry;
     entry.algorithm = group.algorithm;
@@ -34,8 +29,8 @@ RankedAlgorithm ranked_entry(const StudyIndex& index, const RunGroup& group) {
         evaluations.push_back(static_cast<double>(r->evaluations));
     }
     if (!gaps.empty() && gaps.size() == group.runs.size())
-        entry.median_gap = median_of_sample(gaps);
-    entry.median_evaluations = median_of_sample(evaluations);
+        entry.median_gap = median_of(gaps);
+    entry.median_evaluations = median_of(evaluations);
     return entry;
 }
 
@@ -138,18 +133,18 @@ std::optional<AcrossVerdict> across_verdict(const StudyIndex& index,
     return across;
 }
 
-// factorial_effects' reading says what a main effect does; its last words are the verdict.
-ComponentEffect effect_of_reading(const std::string& reading) {
-    const auto ends_with = [&](const std::string& tail) {
-        return reading.size() >= tail.size() &&
-               reading.compare(reading.size() - tail.size(), tail.size(), tail) == 0;
-    };
-    if (ends_with(": helps"))
+// A main effect's direction as a verdict: lowering the response (f or its rank) helps.
+ComponentEffect component_effect(EffectDirection direction) {
+    switch (direction) {
+    case EffectDirection::lowers:
         return ComponentEffect::helps;
-    if (ends_with(": hurts"))
+    case EffectDirection::raises:
         return ComponentEffect::hurts;
-    if (reading.rfind("no significant", 0) == 0)
+    case EffectDirection::none:
         return ComponentEffect::no_evidence;
+    case EffectDirection::disagree:
+        return ComponentEffect::unclear;
+    }
     return ComponentEffect::unclear;
 }
 
@@ -168,7 +163,7 @@ std::vector<ComponentVerdict> component_verdicts(const std::vector<DesignEffects
                 c.mean = e.mean;
                 c.scale = scale_name(analysis.scale);
                 c.adjusted_p = e.adjusted_p;
-                c.effect = effect_of_reading(e.reading);
+                c.effect = component_effect(e.direction);
                 out.push_back(c);
             }
     // The pooled verdict first: the one line per component a reader wants before the problems'.

@@ -95,10 +95,12 @@ TEST(Verdict, SaysWhatEachComponentDoesPooledFirst) {
     helps.factors = {1};
     helps.mean = -2.0;
     helps.adjusted_p = 0.001;
+    helps.direction = EffectDirection::lowers;
     helps.reading = "tutorial on lowers log10(f - f*) by 2: helps";
     EffectEstimate none = helps;
     none.name = "obl";
     none.factors = {0};
+    none.direction = EffectDirection::none;
     none.reading = "no significant effect";
     EffectEstimate interaction = helps;
     interaction.name = "obl x tutorial";
@@ -107,6 +109,7 @@ TEST(Verdict, SaysWhatEachComponentDoesPooledFirst) {
     EffectAnalysis pooled = one;
     pooled.problem = "all problems (2)";
     pooled.problems = 2;
+    pooled.effects[0].direction = EffectDirection::raises;
     pooled.effects[0].reading = "obl on raises log10(f - f*) by 1: hurts";
     design.analyses = {one, pooled};
     const BudgetVerdict verdict = budget_verdict(index, 0.05, {design});
