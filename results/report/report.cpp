@@ -11,6 +11,7 @@
 #include "results/analysis/curve_data.hpp"
 #include "results/analysis/factorial_effects.hpp"
 #include "results/analysis/relative_gaps.hpp"
+#include "results/analysis/run_precision.hpp"
 #include "results/analysis/verdict.hpp"
 #include "results/protocols/protocol_report.hpp"
 #include "results/report/report_figures.hpp"
@@ -23,6 +24,7 @@
 #include "results/tables/comparison_tables.hpp"
 #include "results/tables/effects_table.hpp"
 #include "results/tables/paper_tables.hpp"
+#include "results/tables/precision_table.hpp"
 #include "results/tables/relative_gap_table.hpp"
 #include "results/tables/verdict_tables.hpp"
 
@@ -57,7 +59,8 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
                                  const std::vector<DesignEffects>& designs,
                                  const std::vector<DesignCandidate>& rejected, bool list_algorithms,
                                  const std::vector<const SuiteProtocol*>& protocols,
-                                 const std::optional<RelativeGaps>& gaps) {
+                                 const std::optional<RelativeGaps>& gaps,
+                                 const std::optional<PrecisionRule>& precision) {
     std::vector<Table> tables;
     if (list_algorithms) {
         Table t;
@@ -83,6 +86,8 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
         tables.push_back(std::move(t));
     if (gaps) // problems on one scale: where the optimisers part
         tables.push_back(relative_gap_table(index, *gaps));
+    if (auto runs = precision_table(index, precision)) // runs = auto: what each cell took
+        tables.push_back(std::move(*runs));
     // The protocols' tables that follow the statistics: the competition's, per dimension.
     for (auto& t : protocol_tables(protocols, ProtocolTablesPlace::after_comparisons, index,
                                    comparison.reference, comparison.alpha))
@@ -184,6 +189,8 @@ void say_budget_summary(const StudyData& study, const std::string& budget, const
         console << count_of(index.infinite_runs(), "run") << " ended at "
                 << (index.negative_infinite_runs() == 0 ? "+inf" : "+inf or -inf")
                 << ": the worst value in medians and rank tests, inf in means\n";
+    if (const std::optional<PrecisionRule> rule = precision_rule_of(study.study_text))
+        console << precision_summary(index, *rule) << '\n';
     for (const auto& d : factorial.designs)
         console << "factorial design " << d.design.description() << ": effects in effects.csv\n";
     for (const auto& r : factorial.rejected)
@@ -309,8 +316,9 @@ ReportFiles write_budget_tables(const StudyData& study, const std::string& budge
     console << '\n';
 
     const std::optional<RelativeGaps> gaps = relative_gaps(index);
-    const std::vector<Table> tables = budget_tables(index, comparison, factorial.designs, factorial.rejected,
-                                                    !study.algorithms.empty(), protocols, gaps);
+    const std::vector<Table> tables =
+        budget_tables(index, comparison, factorial.designs, factorial.rejected, !study.algorithms.empty(),
+                      protocols, gaps, precision_rule_of(study.study_text));
     const BudgetVerdict verdict = budget_verdict(index, options.alpha, factorial.designs);
     const std::size_t budget_count = study_budgets(study).size();
     const BudgetReportContext context{

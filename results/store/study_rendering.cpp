@@ -259,6 +259,27 @@ DecodedRecord StudyWriter::stored_record(std::int64_t run_id, std::string_view p
     return decoded;
 }
 
+std::optional<RunRecord> StudyWriter::stored_run(std::int64_t run_id) {
+    Stored stored;
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        const auto found = index_.find(keys_ ? identities_.at(static_cast<std::size_t>(run_id))
+                                             : key_of(run_id, nullptr).identity);
+        if (found == index_.end())
+            return std::nullopt;
+        stored = found->second;
+    }
+    std::string payload;
+    StoreReader(dir_ / StudyFiles::store).read(stored.offset, stored.size, payload);
+    return stored_record(run_id, payload).record;
+}
+
+void StudyWriter::render_only(std::vector<std::int64_t> run_ids) {
+    if (!keys_)
+        throw std::logic_error("StudyWriter::render_only needs a study with run keys");
+    keys_->run_ids = std::move(run_ids);
+}
+
 struct StudyWriter::RenderedChunk {
     RenderedLines text;
     StudySummary summary;

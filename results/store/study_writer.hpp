@@ -83,6 +83,12 @@ public:
     // Stores one finished run (thread-safe; the block is written in one go, and synced when the
     // sync policy says so).
     void append(const RunRecord& record, double wall_seconds);
+    // The record the store holds for a run of this study (its newest block), read back; none when
+    // it holds none. Not while runs are being appended (runs by precision read between rounds).
+    [[nodiscard]] std::optional<RunRecord> stored_run(std::int64_t run_id);
+    // Narrows the runs finish() renders, and requires, to `run_ids` (runs by precision decide them
+    // as the study goes). Needs keys.
+    void render_only(std::vector<std::int64_t> run_ids);
 
     // Writes the sorted result files of every run of the study, runs.csv last, after checking that
     // the store holds exactly the study's runs (throws std::runtime_error naming the first one

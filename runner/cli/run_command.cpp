@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -20,6 +21,7 @@
 #include "problems/core/spec.hpp"
 #include "problems/core/text_excerpt.hpp"
 #include "results/report/report.hpp"
+#include "results/reporters/count_of.hpp"
 #include "results/reporters/reporter_registry.hpp"
 #include "results/store/csv.hpp"
 #include "results/store/run_key.hpp"
@@ -35,6 +37,7 @@
 #include "runner/execution/companion_files.hpp"
 #include "runner/execution/context.hpp"
 #include "runner/execution/parallel_runner.hpp"
+#include "runner/execution/precision_rounds.hpp"
 #include "runner/execution/progress.hpp"
 #include "runner/execution/run_identity.hpp"
 #include "runner/execution/study_lock.hpp"
@@ -282,15 +285,20 @@ ProgressWork progress_work(const PreparedStudy& prepared, const StudyWriter& wri
 // bar (after a second, so short studies print nothing); a batch log gets a plain line every
 // --progress-interval seconds; --quiet gets neither. `after_runs_seconds`: the report's estimate,
 // which the ETA includes (0 without one).
-TimedOutcome run_with_progress(const PreparedStudy& prepared, StudyWriter& writer,
-                               const po::variables_map& vm, int threads,
-                               const std::optional<std::vector<std::int64_t>>& shard_runs, bool quiet,
-                               double after_runs_seconds) {
+ProgressOptions progress_options(const po::variables_map& vm) {
     const bool forced = vm["progress"].as<bool>();
     ProgressOptions shown;
     shown.terminal = forced || stderr_is_terminal();
     shown.delay_seconds = forced ? 0.0 : 1.0;
     shown.line_interval = vm["progress-interval"].as<double>();
+    return shown;
+}
+
+TimedOutcome run_with_progress(const PreparedStudy& prepared, StudyWriter& writer,
+                               const po::variables_map& vm, int threads,
+                               const std::optional<std::vector<std::int64_t>>& shard_runs, bool quiet,
+                               double after_runs_seconds) {
+    const ProgressOptions shown = progress_options(vm);
     // Costs only for a display: estimating them may run a few short calibration runs.
     ProgressBar progress(std::cerr,
                          quiet ? ProgressWork::uniform(0, 0) : progress_work(prepared, writer, shard_runs),
@@ -308,6 +316,40 @@ TimedOutcome run_with_progress(const PreparedStudy& prepared, StudyWriter& write
     TimedOutcome timed;
     timed.outcome = run_study_anywhere(prepared, &writer, runner);
     progress.finish();
+    const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
+    timed.wall_seconds = wall.count();
+    return timed;
+}
+
+// Runs by precision: a line and a progress display per round (the runs a round adds are known
+// only when it starts). The ETA is the round's: how many rounds follow depends on their results.
+TimedOutcome run_rounds_with_progress(const PreparedStudy& prepared, StudyWriter& writer,
+                                      const po::variables_map& vm, int threads, bool quiet) {
+    const ProgressOptions shown = progress_options(vm);
+    const std::vector<double> costs = quiet ? std::vector<double>{} : estimated_run_costs(prepared);
+    std::unique_ptr<ProgressBar> progress;
+    RunnerOptions runner;
+    runner.threads = threads;
+    runner.stop = &stop_requested;
+    if (!quiet)
+        runner.on_run_finished = [&progress](std::int64_t, std::int64_t, const RunRecord& record) {
+            progress->update(record.run_id, record.evaluations);
+        };
+    const auto on_round = [&](const PrecisionRoundStart& round) {
+        if (quiet)
+            return;
+        if (progress)
+            progress->finish();
+        std::cerr << "round " << round.round << ": " << count_of(round.runs.size(), "run") << " for "
+                  << count_of(static_cast<std::size_t>(round.unsettled_cells), "cell")
+                  << " short of the precision\n";
+        progress = std::make_unique<ProgressBar>(std::cerr, ProgressWork(costs, round.runs, {}), shown);
+    };
+    const auto started = std::chrono::steady_clock::now();
+    TimedOutcome timed;
+    timed.outcome = run_study_by_precision(prepared, writer, runner, on_round);
+    if (progress)
+        progress->finish();
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
     timed.wall_seconds = wall.count();
     return timed;
@@ -379,7 +421,9 @@ int run_into_directory(const PreparedStudy& prepared, const RunSettings& setting
     const double report_seconds =
         report && !quiet ? estimate_report(prepared, !vm["no-figures"].as<bool>()).seconds() : 0.0;
     const TimedOutcome timed =
-        run_with_progress(prepared, writer, vm, threads, shard_runs, quiet, report_seconds);
+        prepared.study.by_precision
+            ? run_rounds_with_progress(prepared, writer, vm, threads, quiet)
+            : run_with_progress(prepared, writer, vm, threads, shard_runs, quiet, report_seconds);
     const RunnerOutcome& outcome = timed.outcome;
     if (outcome.interrupted) {
         std::cerr << "interrupted: " << outcome.kept << " of " << outcome.total << " runs kept in "
@@ -424,6 +468,14 @@ int run_run_command(const std::vector<std::string>& args) {
         return exit_usage;
     }
 
+    if (prepared->study.by_precision && (settings.shard || distributed_rank_count() > 1)) {
+        std::cerr << "mhbench run: runs = auto decides each round from the results of the last, which "
+                  << (settings.shard
+                          ? "a shard cannot see; give a fixed --runs to shard the study"
+                          : "the ranks of mpirun do not share; run it in one process or give a fixed --runs")
+                  << '\n';
+        return exit_usage;
+    }
     const int threads = resolve_thread_count(settings.threads);
     const std::filesystem::path dir = vm.count("out") != 0 ? vm["out"].as<std::string>() : "studies/" + name;
     if (vm["dry-run"].as<bool>()) {

@@ -74,7 +74,7 @@ RunnerOutcome run_study(const PreparedStudy& study, StudyWriter& writer, const R
             tbb::simple_partitioner());
         outcome.kept = kept;
         outcome.interrupted = kept < outcome.total;
-        if (!outcome.interrupted)
+        if (!outcome.interrupted && options.finish_writer)
             writer.finish(); // renders in parallel too: under the same cap
     }
     return outcome;

@@ -30,6 +30,9 @@ struct RunnerOptions {
     // record (its run id, the evaluations it spent). Calls are serialised (never two at once), but
     // may come from any worker thread.
     std::function<void(std::int64_t kept, std::int64_t total, const RunRecord& record)> on_run_finished;
+    // Whether the writer renders the study's files once every run is done (runs by precision render
+    // after their last round, not after each).
+    bool finish_writer = true;
 };
 
 struct RunnerOutcome {

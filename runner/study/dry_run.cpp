@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "problems/core/parameters.hpp" // format_real
 #include "results/protocols/protocol_registry.hpp"
 #include "results/store/study_files.hpp"
 #include "runner/study/calibration.hpp"
@@ -78,11 +79,18 @@ std::string dry_run_text(const PreparedStudy& prepared, const std::filesystem::p
     out << "mhbench run --dry-run: nothing is run or written.\n\n"
         << "study: " << counted(prepared.algorithms.size(), "algorithm") << " x "
         << counted(prepared.problems.size(), "problem") << " x " << counted(s.budgets.size(), "budget")
-        << " x " << counted(static_cast<std::size_t>(s.runs), "run") << " = "
+        << " x " << (s.by_precision ? "up to " : "") << counted(static_cast<std::size_t>(s.runs), "run")
+        << " = " << (s.by_precision ? "at most " : "")
         << counted(static_cast<std::size_t>(prepared.run_count()), "run") << "; seed " << s.seed << ", seeds "
         << seed_mode_name(s.seeds)
         << (s.seeds == SeedMode::common ? " (every algorithm starts run r from the same stream)\n"
                                         : " (each algorithm its own streams)\n");
+    if (const auto& rule = s.by_precision)
+        out << "runs = auto: each cell starts with " << rule->initial << " runs and gets " << rule->step
+            << " more a round until the standard error of its difference to the reference is at most "
+            << format_real(rule->precision) << ", or it has " << rule->max
+            << "; the estimates below are for the most, at least " << rule->initial << "/" << rule->max
+            << " of them are needed\n";
     std::size_t width = 5;
     for (const auto& a : prepared.algorithms)
         width = std::max(width, a.info.label.size());

@@ -412,6 +412,26 @@ RunRequest PreparedStudy::request(std::int64_t run_id) const {
     return r;
 }
 
+namespace {
+
+// Runs by precision need a precision, and rounds that fit under the most runs.
+void check_precision_rule(const PrecisionRule& rule, std::vector<std::string>& errors) {
+    if (!(rule.precision > 0))
+        errors.emplace_back("runs = auto needs precision = the standard error to reach on log10(f - f*), "
+                            "e.g. --precision 0.05");
+    if (rule.max < 2)
+        errors.push_back("max-runs = " + std::to_string(rule.max) + " is outside [2, " +
+                         std::to_string(max_runs_per_pair) + "]: a standard error needs two runs");
+    else if (rule.initial < 2 || rule.initial > rule.max)
+        errors.push_back("initial-runs = " + std::to_string(rule.initial) +
+                         " is outside [2, max-runs = " + std::to_string(rule.max) + "]");
+    if (rule.step < 1 || rule.step > rule.max)
+        errors.push_back("round-runs = " + std::to_string(rule.step) +
+                         " is outside [1, max-runs = " + std::to_string(rule.max) + "]");
+}
+
+} // namespace
+
 PreparedStudy prepare_study(const Study& study, const AlgorithmRegistry& algorithms,
                             const ProblemRegistry& problems) {
     std::vector<std::string> errors;
@@ -426,8 +446,11 @@ PreparedStudy prepare_study(const Study& study, const AlgorithmRegistry& algorit
     prepare_problems(study, problems, prepared, errors);
 
     if (study.runs < 1 || study.runs > max_runs_per_pair)
-        errors.push_back("study: runs = " + std::to_string(study.runs) + " is outside [1, " +
-                         std::to_string(max_runs_per_pair) + "]");
+        errors.push_back("study: " + std::string(study.by_precision ? "max-runs" : "runs") + " = " +
+                         std::to_string(study.runs) + " is outside [1, " + std::to_string(max_runs_per_pair) +
+                         "]");
+    if (study.by_precision)
+        check_precision_rule(*study.by_precision, errors);
     if (study.budgets.empty())
         errors.emplace_back("budget: give a number of iterations or of evaluations (or both)");
     for (const StudyBudget& budget : study.budgets) {

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,7 @@
 #include "algorithms/algorithm_registry.hpp"
 #include "problems/objective.hpp"
 #include "problems/problem_registry.hpp"
+#include "results/analysis/run_precision.hpp"
 #include "results/store/algorithm_info.hpp"
 #include "runner/run/execute_run.hpp"
 #include "runner/study/prepared_components.hpp"
@@ -47,7 +49,10 @@ struct Study {
     // missing or empty (then errors carry no prefix).
     std::vector<std::string> algorithm_origins;
     std::vector<std::string> problem_origins;
-    std::int64_t runs = 20; // repetitions of each (algorithm, problem, budget)
+    std::int64_t runs = 20; // repetitions of each (algorithm, problem, budget); with by_precision, the most
+    // Runs by precision (`runs = auto`): each cell gets the runs its rule asks for, up to `runs`
+    // (= by_precision->max), in rounds (runner/execution/precision_rounds.hpp); none: `runs` each.
+    std::optional<PrecisionRule> by_precision{};
     std::uint64_t seed = 1;
     SeedMode seeds = SeedMode::common;
     // Iterations and/or evaluations (whichever is spent first), optional target (absolute or

@@ -68,7 +68,14 @@ std::string study_ini(const Study& study) {
         text += "algorithms = " + a + '\n';
     for (const auto& p : study.problems)
         text += "problems = " + p + '\n';
-    text += "runs = " + std::to_string(study.runs) + '\n';
+    if (const auto& rule = study.by_precision) { // only then: the study.ini of every other study is as it was
+        text += "runs = auto\nprecision = " + format_real(rule->precision) +
+                "\nmax-runs = " + std::to_string(rule->max) +
+                "\ninitial-runs = " + std::to_string(rule->initial) +
+                "\nround-runs = " + std::to_string(rule->step) + '\n';
+    } else {
+        text += "runs = " + std::to_string(study.runs) + '\n';
+    }
     text += "seed = " + std::to_string(study.seed) + '\n';
     text += "seeds = " + std::string(seed_mode_name(study.seeds)) + '\n';
     for (const auto& b : study.budgets)

@@ -92,7 +92,16 @@ po::options_description study_options() {
          "problems, as name:key=value,...; integer parameters may be ranges (bbob:f=1-24) and any "
          "parameter a grid (dim={2,5,10}) (see `mhbench list problems`)")
         ("problem", po::value<specs>()->multitoken()->composing(), "same as --problems")
-        ("runs", po::value<std::string>(), "runs of each algorithm on each problem and budget (default 20)")
+        ("runs", po::value<std::string>(),
+         "runs of each algorithm on each problem and budget (default 20), or auto: as many as the precision "
+         "asks (see --precision)")
+        ("precision", po::value<std::string>(),
+         "with --runs auto: add runs to a cell (an algorithm on a problem at a budget) in rounds until the "
+         "standard error of its mean difference to the reference, on log10(f - f*) (f where f* is unknown), "
+         "is at most this, e.g. 0.05")
+        ("max-runs", po::value<std::string>(), "with --runs auto: the most runs a cell gets (default 100)")
+        ("initial-runs", po::value<std::string>(), "with --runs auto: the runs every cell starts with (default 10)")
+        ("round-runs", po::value<std::string>(), "with --runs auto: the runs a round adds to an unsettled cell (default 5)")
         ("seed", po::value<std::string>(), "study seed, 0 to 2^64-1; every run's seed is derived from it (default 1)")
         ("seeds", po::value<std::string>(),
          "common (default): run r on problem p starts from the same stream for every algorithm (common "
@@ -154,8 +163,23 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
     } else if (key == "plugins" || key == "plugin") {
         add_plugins(study_, value);
     } else if (key == "runs") {
-        if (const auto v = read_integer(max_runs_per_pair))
+        if (value == "auto") {
+            study_.by_precision = study_.by_precision.value_or(PrecisionRule{});
+        } else if (const auto v = read_integer(max_runs_per_pair)) {
             study_.runs = *v;
+            study_.by_precision.reset();
+        }
+    } else if (key == "precision") {
+        double v = 0;
+        if (!parse_real(value, v) || !(v > 0)) {
+            fail("is not a number in (0, inf)");
+            precision_ = std::numeric_limits<double>::infinity(); // said once: not "needs precision" too
+        } else {
+            precision_ = v;
+        }
+    } else if (key == "max-runs" || key == "initial-runs" || key == "round-runs") {
+        const auto v = read_integer(max_runs_per_pair);
+        (key == "max-runs" ? max_runs_ : key == "initial-runs" ? initial_runs_ : round_runs_) = v;
     } else if (key == "seed") {
         if (const auto seed = parse_seed(value))
             study_.seed = *seed;
@@ -208,7 +232,24 @@ void StudyOptionReader::apply(const std::string& key, const std::string& value, 
     }
 }
 
-void StudyOptionReader::finish(std::vector<std::string>&) {
+// The rule of runs by precision: this source's keys over what the study had (a preset's rule).
+void StudyOptionReader::finish_precision(std::vector<std::string>& errors) {
+    const bool given = precision_ || max_runs_ || initial_runs_ || round_runs_;
+    if (!study_.by_precision) {
+        if (given)
+            errors.emplace_back("precision, max-runs, initial-runs and round-runs go with runs = auto");
+        return;
+    }
+    PrecisionRule& rule = *study_.by_precision;
+    rule.precision = precision_.value_or(rule.precision);
+    rule.max = max_runs_.value_or(rule.max);
+    rule.initial = initial_runs_.value_or(rule.initial);
+    rule.step = round_runs_.value_or(rule.step);
+    study_.runs = rule.max; // runs are numbered as if every cell had the most
+}
+
+void StudyOptionReader::finish(std::vector<std::string>& errors) {
+    finish_precision(errors);
     std::vector<StudyBudget> budgets;
     if (iterations_ || evaluations_ || evaluations_by_dimension_) {
         StudyBudget b;

@@ -36,6 +36,8 @@ public:
     void finish(std::vector<std::string>& errors);
 
 private:
+    void finish_precision(std::vector<std::string>& errors);
+
     Study& study_;
     std::set<std::string> seen_;
     std::optional<std::int64_t> iterations_;
@@ -44,6 +46,11 @@ private:
     std::optional<double> target_;
     std::optional<double> relative_target_;
     std::vector<StudyBudget> budgets_;
+    // Runs by precision: applied in finish(), whatever order the keys came in.
+    std::optional<double> precision_;
+    std::optional<std::int64_t> max_runs_;
+    std::optional<std::int64_t> initial_runs_;
+    std::optional<std::int64_t> round_runs_;
 };
 
 } // namespace mhb

@@ -115,6 +115,21 @@ std::vector<BadInputCase> catalogue() {
                       "PMSM identification)"})},
         {"", "run --algorithms random-search --problems sphere --runs 1e300 --iterations 5 --out s", 2,
          stderr_says({"mhbench run: runs = 1e300 is too large (at most 1000000)"})},
+        // Runs by precision: the rule must be whole, and rounds cannot be split into shards.
+        {"", "run --algorithms random-search --problems sphere --iterations 5 --runs auto --out s", 2,
+         stderr_says({"mhbench run: runs = auto needs precision = the standard error to reach on log10(f - f*), "
+                      "e.g. --precision 0.05"})},
+        {"", "run --algorithms random-search --problems sphere --iterations 5 --precision 0.1 --out s", 2,
+         stderr_says({"mhbench run: precision, max-runs, initial-runs and round-runs go with runs = auto"})},
+        {"", "run --algorithms random-search --problems sphere --iterations 5 --runs auto --precision nan --out s", 2,
+         stderr_says({"mhbench run: precision = nan is not a number in (0, inf)"})},
+        {"", "run --algorithms random-search --problems sphere --iterations 5 --runs auto --precision 0.1 "
+             "--max-runs 8 --initial-runs 10 --out s",
+         2, stderr_says({"mhbench run: initial-runs = 10 is outside [2, max-runs = 8]"})},
+        {"", "run --algorithms random-search --problems sphere --iterations 5 --runs auto --precision 0.1 "
+             "--shard 1/2 --out s",
+         2, stderr_says({"mhbench run: runs = auto decides each round from the results of the last, which a shard "
+                         "cannot see; give a fixed --runs to shard the study"})},
         {"", "run --algorithms random-search --problems sphere --iterations lots --out s", 2,
          stderr_says({"mhbench run: iterations = lots is not an integer"})},
         {"", "run --algorithms random-search --problems sphere --iterations " + big_digits + " --out s", 2,

@@ -62,7 +62,7 @@ public:
         }
         outcome_.kept = kept_;
         outcome_.interrupted = kept_ < outcome_.total;
-        if (!error_ && !outcome_.interrupted) {
+        if (!error_ && !outcome_.interrupted && options_.finish_writer) {
             try {
                 writer_.finish();
             } catch (...) {
