@@ -25,6 +25,7 @@ int run_simulate_command(const std::vector<std::string>& args);
 int run_identify_command(const std::vector<std::string>& args);
 int run_eval_command(const std::vector<std::string>& args);
 int run_merge_command(const std::vector<std::string>& args);
+int run_plan_command(const std::vector<std::string>& args);
 int run_plugin_check_command(const std::vector<std::string>& args);
 
 namespace {
@@ -38,6 +39,8 @@ const std::vector<Command>& commands() {
         {"identify", "least-squares Rs, Ld, Lq, psi with standard errors from a dataset CSV",
          run_identify_command},
         {"eval", "print f at given points (check a function by hand)", run_eval_command},
+        {"plan", "how many problems and runs a comparison needs (power, precision), before any run",
+         run_plan_command},
         {"merge", "join the shard directories of one study (mhbench run --shard i/n) into one",
          run_merge_command},
         {"plugin-check", "check that an optimiser or a problem (your own: a plug-in) is fit for a study",

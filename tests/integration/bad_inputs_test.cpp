@@ -115,6 +115,15 @@ std::vector<BadInputCase> catalogue() {
                       "PMSM identification)"})},
         {"", "run --algorithms random-search --problems sphere --runs 1e300 --iterations 5 --out s", 2,
          stderr_says({"mhbench run: runs = 1e300 is too large (at most 1000000)"})},
+        // mhbench plan: what it plans must be said, and in range.
+        {"", "plan", 2,
+         stderr_says({"mhbench plan: give --effect D (problems needed) or --precision E with --sd S or --pilot DIR "
+                      "(runs per problem); see --help"})},
+        {"", "plan --effect 0", 2, stderr_says({"mhbench plan: effect = 0 is outside (0, inf)"})},
+        {"", "plan --effect 0.5 --power 1", 2, stderr_says({"mhbench plan: power = 1 is outside (0, 1)"})},
+        {"", "plan --precision 0.1", 2, stderr_says({"mhbench plan: --precision needs --sd S or --pilot DIR (one of them)"})},
+        {"", "plan --effect 0.5 --test anova", 2,
+         stderr_says({"mhbench plan: --test = anova is not one of {wilcoxon, t}"})},
         // Runs by precision: the rule must be whole, and rounds cannot be split into shards.
         {"", "run --algorithms random-search --problems sphere --iterations 5 --runs auto --out s", 2,
          stderr_says({"mhbench run: runs = auto needs precision = the standard error to reach on log10(f - f*), "
