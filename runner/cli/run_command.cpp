@@ -214,7 +214,13 @@ int run_as_other_rank(const PreparedStudy& prepared, int threads) {
     RunnerOptions worker;
     worker.threads = threads;
     worker.stop = &stop_requested;
-    return run_study_anywhere(prepared, nullptr, worker).interrupted ? exit_interrupted : exit_ok;
+    if (!prepared.study.by_precision)
+        return run_study_anywhere(prepared, nullptr, worker).interrupted ? exit_interrupted : exit_ok;
+    // Runs by precision: a round at a time, for as long as rank 0 (which sees the results) says.
+    while (distributed_another_round(false))
+        if (run_study_anywhere(prepared, nullptr, worker).interrupted)
+            return exit_interrupted;
+    return exit_ok;
 }
 
 // A shard's directory says which shard it holds ("shard = i/n\n", empty for the whole study), so
@@ -335,7 +341,10 @@ TimedOutcome run_rounds_with_progress(const PreparedStudy& prepared, StudyWriter
         runner.on_run_finished = [&progress](std::int64_t, std::int64_t, const RunRecord& record) {
             progress->update(record.run_id, record.evaluations);
         };
-    const auto on_round = [&](const PrecisionRoundStart& round) {
+    PrecisionRoundHooks hooks;
+    hooks.run = [&](const RunnerOptions& round) { return run_study_anywhere(prepared, &writer, round); };
+    hooks.announce = [](bool more) { (void)distributed_another_round(more); };
+    hooks.on_round = [&](const PrecisionRoundStart& round) {
         if (quiet)
             return;
         if (progress)
@@ -347,7 +356,7 @@ TimedOutcome run_rounds_with_progress(const PreparedStudy& prepared, StudyWriter
     };
     const auto started = std::chrono::steady_clock::now();
     TimedOutcome timed;
-    timed.outcome = run_study_by_precision(prepared, writer, runner, on_round);
+    timed.outcome = run_study_by_precision(prepared, writer, runner, hooks);
     if (progress)
         progress->finish();
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
@@ -468,12 +477,10 @@ int run_run_command(const std::vector<std::string>& args) {
         return exit_usage;
     }
 
-    if (prepared->study.by_precision && (settings.shard || distributed_rank_count() > 1)) {
-        std::cerr << "mhbench run: runs = auto decides each round from the results of the last, which "
-                  << (settings.shard
-                          ? "a shard cannot see; give a fixed --runs to shard the study"
-                          : "the ranks of mpirun do not share; run it in one process or give a fixed --runs")
-                  << '\n';
+    if (prepared->study.by_precision && settings.shard) {
+        std::cerr
+            << "mhbench run: runs = auto decides each round from the results of the last, which a shard "
+               "cannot see; give a fixed --runs to shard the study (or run it under mpirun)\n";
         return exit_usage;
     }
     const int threads = resolve_thread_count(settings.threads);

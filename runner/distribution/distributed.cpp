@@ -88,6 +88,14 @@ std::vector<std::string> distributed_data_differences(const PreparedStudy& study
     return {};
 }
 
+bool distributed_another_round(bool more) {
+#if MHB_WITH_MPI
+    if (Distributed* d = distributed(); d != nullptr && d->session.size() > 1)
+        return d->session.broadcast(more);
+#endif
+    return more;
+}
+
 std::string distributed_context() {
     const int ranks = distributed_rank_count();
     return ranks > 1 ? "mpi_ranks = " + std::to_string(ranks) + "\n" : "";

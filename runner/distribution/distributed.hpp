@@ -41,6 +41,10 @@ std::vector<std::string> distributed_data_differences(const PreparedStudy& study
 // "mpi_ranks = N\n" for context.ini when the runs are spread over N > 1 ranks, else "".
 std::string distributed_context();
 
+// Collective under MPI (N > 1 ranks): rank 0's `more` on every rank, which says whether another
+// round of runs by precision follows (runner/execution/precision_rounds.hpp); `more` elsewhere.
+bool distributed_another_round(bool more);
+
 // run_study's contract, on every rank: `writer` is non-null exactly on rank 0 (the one writer),
 // which alone reads options.run_ids and calls options.on_run_finished (for the runs of every
 // rank). options.threads is each rank's own. options.stop stops the rank it is set on: rank 0

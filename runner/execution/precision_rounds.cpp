@@ -78,8 +78,7 @@ PrecisionPlan plan_precision_runs(const PreparedStudy& study, const std::map<std
 }
 
 RunnerOutcome run_study_by_precision(const PreparedStudy& study, StudyWriter& writer,
-                                     const RunnerOptions& options,
-                                     const std::function<void(const PrecisionRoundStart&)>& on_round) {
+                                     const RunnerOptions& options, const PrecisionRoundHooks& hooks) {
     // What the store holds already (failed runs are not completed: they are computed again).
     std::map<std::int64_t, double> values;
     for (const std::int64_t id : writer.completed())
@@ -101,11 +100,20 @@ RunnerOutcome run_study_by_precision(const PreparedStudy& study, StudyWriter& wr
     };
     RunnerOutcome outcome;
     for (int number = 1;; ++number) {
-        const PrecisionPlan plan = plan_precision_runs(study, values);
+        PrecisionPlan plan;
         std::vector<std::int64_t> pending;
-        for (const std::int64_t id : plan.wanted)
-            if (values.count(id) == 0)
-                pending.push_back(id);
+        try {
+            plan = plan_precision_runs(study, values);
+            for (const std::int64_t id : plan.wanted)
+                if (values.count(id) == 0)
+                    pending.push_back(id);
+        } catch (...) {
+            if (hooks.announce) // whoever waits for the next round must not wait for ever
+                hooks.announce(false);
+            throw;
+        }
+        if (hooks.announce)
+            hooks.announce(!pending.empty());
         outcome.total = static_cast<std::int64_t>(plan.wanted.size());
         outcome.resumed = static_cast<std::int64_t>(
             std::count_if(plan.wanted.begin(), plan.wanted.end(),
@@ -118,10 +126,10 @@ RunnerOutcome run_study_by_precision(const PreparedStudy& study, StudyWriter& wr
             writer.finish();
             return outcome;
         }
-        if (on_round)
-            on_round({number, pending, plan.unsettled_cells});
+        if (hooks.on_round)
+            hooks.on_round({number, pending, plan.unsettled_cells});
         round.run_ids = pending;
-        const RunnerOutcome done = run_study(study, writer, round);
+        const RunnerOutcome done = hooks.run ? hooks.run(round) : run_study(study, writer, round);
         if (done.interrupted) {
             outcome.kept = outcome.total - static_cast<std::int64_t>(pending.size()) + done.kept;
             outcome.interrupted = true;

@@ -33,12 +33,19 @@ struct PrecisionRoundStart {
     std::int64_t unsettled_cells = 0; // the cells that asked for them
 };
 
+// Where the rounds run, and who hears of them: by default run_study in this process. Under MPI
+// the CLI runs each round over every rank and tells the other ranks whether another follows
+// (runner/distribution/distributed.hpp), since only rank 0 sees the results that decide it.
+struct PrecisionRoundHooks {
+    std::function<RunnerOutcome(const RunnerOptions& round)> run; // empty: run_study
+    std::function<void(bool another_round)> announce;             // empty: nobody to tell
+    std::function<void(const PrecisionRoundStart&)> on_round;     // before each round (progress)
+};
+
 // Runs `study` (which must have by_precision) in rounds into `writer`: options.run_ids is ignored,
-// each round runs its own; on_run_finished is called as run_study calls it. `on_round` (may be
-// empty) hears of each round before it starts. When every cell has settled, the writer renders
-// exactly the runs asked for; an interrupted study is left for a resume.
+// each round runs its own; on_run_finished is called as run_study calls it. When every cell has
+// settled, the writer renders exactly the runs asked for; an interrupted study is left for a resume.
 RunnerOutcome run_study_by_precision(const PreparedStudy& study, StudyWriter& writer,
-                                     const RunnerOptions& options,
-                                     const std::function<void(const PrecisionRoundStart&)>& on_round = {});
+                                     const RunnerOptions& options, const PrecisionRoundHooks& hooks = {});
 
 } // namespace mhb

@@ -138,7 +138,7 @@ std::vector<BadInputCase> catalogue() {
         {"", "run --algorithms random-search --problems sphere --iterations 5 --runs auto --precision 0.1 "
              "--shard 1/2 --out s",
          2, stderr_says({"mhbench run: runs = auto decides each round from the results of the last, which a shard "
-                         "cannot see; give a fixed --runs to shard the study"})},
+                         "cannot see; give a fixed --runs to shard the study (or run it under mpirun)"})},
         {"", "run --algorithms random-search --problems sphere --iterations lots --out s", 2,
          stderr_says({"mhbench run: iterations = lots is not an integer"})},
         {"", "run --algorithms random-search --problems sphere --iterations " + big_digits + " --out s", 2,

@@ -88,6 +88,21 @@ TEST(MpiCli, AStudyInterruptedInOneProcessIsFinishedUnderMpirun) {
     expect_same_records(dir, one);
 }
 
+// Runs by precision: rank 0 plans each round from the results, every rank runs it, and the
+// stopping points are a one-process run's.
+TEST(MpiCli, RunsByPrecisionStopWhereOneProcessStops) {
+    const std::string by_precision = "--algorithms 'itlbo tlbo pso' --problems 'sphere:dim=5 pmsm' --iterations 60 "
+                                     "--runs auto --precision 0.15 --max-runs 30 --no-report ";
+    const fs::path one = fresh("precision_one");
+    const auto single = run_mhbench("run " + by_precision + "--threads 1 --quiet --out " + one.string());
+    ASSERT_EQ(single.exit_code, 0) << single.err;
+    const fs::path two = fresh("precision_two");
+    const auto spread = mpirun_mhbench("run " + by_precision + "--threads 1 --out " + two.string());
+    ASSERT_EQ(spread.exit_code, 0) << spread.out << spread.err;
+    EXPECT_NE(spread.err.find("round 2:"), std::string::npos) << spread.err;
+    expect_same_records(two, one);
+}
+
 TEST(MpiCli, WhenRankZeroRefusesTheDirectoryEveryRankEnds) {
     // A directory of the user's own files is never taken over: rank 0 refuses it before any run,
     // and the other rank, waiting for runs, must be released rather than hang.

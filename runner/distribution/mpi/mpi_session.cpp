@@ -18,6 +18,12 @@ MpiSession::MpiSession() {
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
 
+bool MpiSession::broadcast(bool flag) const {
+    int value = flag ? 1 : 0;
+    MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    return value != 0;
+}
+
 MpiSession::~MpiSession() {
     MPI_Finalize();
 }

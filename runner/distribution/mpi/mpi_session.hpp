@@ -15,6 +15,8 @@ public:
 
     [[nodiscard]] int rank() const { return rank_; }
     [[nodiscard]] int size() const { return size_; }
+    // Collective: rank 0's `flag` on every rank.
+    [[nodiscard]] bool broadcast(bool flag) const;
 
 private:
     int rank_ = 0;

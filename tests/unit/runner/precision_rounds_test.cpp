@@ -53,8 +53,8 @@ Ran run_into(const fs::path& dir, const PreparedStudy& study, int threads,
     options.stop = stop;
     options.on_run_finished = std::move(on_run);
     Ran ran;
-    ran.outcome =
-        run_study_by_precision(study, writer, options, [&](const PrecisionRoundStart&) { ++ran.rounds; });
+    ran.outcome = run_study_by_precision(study, writer, options,
+                                         {{}, {}, [&](const PrecisionRoundStart&) { ++ran.rounds; }});
     return ran;
 }
 
