@@ -1,10 +1,13 @@
 // The Problem contract: what an optimisation problem is to mhbench. A problem computes and
 // nothing else: evaluate() is const, thread-safe and has no hidden state (no counters, no file
-// I/O, no random draws), so one instance is shared read-only by every run of a study.
+// I/O, no random draws), so one instance is shared read-only by every run of a study. The one
+// exception is a problem random per run (f0), which gives each run an instance of its own.
 // Optimisers never see a Problem: they see the counted Objective (problems/objective.hpp).
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -81,6 +84,16 @@ public:
     // version it announces (problems/external/command.hpp). Empty for in-process problems, so
     // that their run identities are unchanged.
     [[nodiscard]] virtual std::string identity_facts() const { return {}; }
+
+    // The instance one run evaluates, for a problem whose values are random per run (f0: a fresh
+    // uniform value at each evaluation). It draws from a stream of `run_seed` alone, independent of
+    // the optimiser's, serves that run only (one thread; parallel and batch evaluation off, so
+    // values are drawn in evaluation order) and may keep state in evaluate(). nullptr, the
+    // default, means the shared instance serves every run (ARCHITECTURE.md section 4.1).
+    [[nodiscard]] virtual std::unique_ptr<Problem> for_run(std::uint64_t run_seed) const {
+        (void)run_seed;
+        return nullptr;
+    }
 };
 
 } // namespace mhb

@@ -4,6 +4,7 @@ namespace mhb {
 
 // One line per problem family (or set of families); each is defined in its own file.
 void register_classic_functions(ProblemRegistry& registry);
+void register_f0(ProblemRegistry& registry);
 void register_bbob(ProblemRegistry& registry);
 void register_pmsm(ProblemRegistry& registry);
 void register_cec(ProblemRegistry& registry);
@@ -12,6 +13,7 @@ void register_external_problem(ProblemRegistry& registry);
 
 void register_builtin_problems(ProblemRegistry& registry) {
     register_classic_functions(registry);
+    register_f0(registry);
     register_bbob(registry);
     register_pmsm(registry);
     register_cec(registry);

@@ -6,7 +6,8 @@ Usage: plot_study.py REPORT_DIR            draw every figure
 
 Reads REPORT_DIR/algorithms.csv, problems.csv, budget.txt, curves_iteration.csv,
 curves_evaluations.csv, parameters_iteration.csv, final_values.csv, target_hits.csv,
-critical_difference.csv, effects.csv, effect_means.csv and relative_gap_medians.csv (written by
+critical_difference.csv, effects.csv, effect_means.csv, relative_gap_medians.csv, final_points.csv
+and structural_bias.csv (written by
 `mhbench report`) and writes NAME.pdf (vector, fonts embedded as TrueType, for a paper) and NAME.png
 (for the HTML page) to REPORT_DIR/figures/, with styles.csv (algorithm,label,colour,marker,linestyle:
 each algorithm's style, a function of its place in algorithms.csv, the same in every figure). A study
@@ -41,6 +42,9 @@ panel per problem (<kind>_all) for two to six problems (MOST_PANELS), else one f
   effects_main_<design>              mean response with each switch off and on, one line per problem
   effects_interaction_<design>       A off/on, one line per level of B, for every pair of switches,
                                      pooled over the problems (or the design's only problem)
+  structural_bias_<problem>          f0's final best points as per-dimension histograms (density
+                                     relative to uniform), a panel per algorithm titled with its
+                                     verdict (final_points.csv and the structural_bias table)
 Sizes: one column (3.5 in) for a single panel, two columns (7.16 in) for several; 8-9 pt serif
 (STIX, Times-like); PNG at 140 dpi (scripts/figure_style.py, shared with plot_flux_map.py). Figures
 are drawn by as many forked workers as the process may use CPUs (MHB_PLOT_WORKERS overrides), each
@@ -752,6 +756,9 @@ def plan_folder(report):
         add("effects_interaction_" + design_slug, "effects", effects_interaction, design, rows, readings)
     for (design,), rows in group(effects, "Design").items():
         add("effects_overview_" + slug(design.split(":")[0]), "effects", effects_overview, design, rows)
+    verdicts = {(r.get("Problem", ""), r["Algorithm"]): r["Verdict"] for r in folder.read("structural_bias.csv")}
+    for (problem,), rows in group(folder.read("final_points.csv"), "problem").items():
+        add("structural_bias_" + slug(problem), "structural_bias", structural_bias_figure, problem, rows, verdicts)
     return folder, jobs
 
 
@@ -1096,6 +1103,41 @@ def relative_gaps_figure(job, folder, rows):
     ax.set_title("Relative gap to f* per problem" + folder.suffix)
     shared_legend(fig, handles, [h.get_label() for h in handles], ncol)
     finish_note(job, ax, left_out, drawn, "medians")
+    return fig
+
+
+BIAS_BINS = 20  # bins of [0, 1] per dimension in the structural-bias figure
+
+
+def structural_bias_figure(job, folder, problem, rows, verdicts):
+    """f0's final points as per-dimension histograms, a panel per algorithm: column d is the histogram
+    of coordinate d over the runs (20 bins), coloured by its density relative to uniform (white 1,
+    red more, blue fewer; 2 and above saturate). Uniform points leave the panel pale; a pull to the
+    centre is a red band at 0.5, a pull to the bounds red rows at 0 and 1. Titled with the verdict."""
+    by_algorithm = group(rows, "algorithm")
+    cols = min(len(by_algorithm), 4)
+    fig, axes, _ = new_figure(TWO_COLUMNS, rows=math.ceil(len(by_algorithm) / cols), cols=cols,
+                              panel_height=1.5, title_lines=2, left=0.45, wspace=0.35, hspace=0.75,
+                              sharey=True)
+    for ax, ((label,), points) in zip(axes, by_algorithm.items()):
+        dimensions = max(int(c["dimension"]) for c in points)
+        counts = [[0] * dimensions for _ in range(BIAS_BINS)]
+        for c in points:
+            x = min(max(number(c["x"]), 0.0), 1.0)
+            counts[min(int(x * BIAS_BINS), BIAS_BINS - 1)][int(c["dimension"]) - 1] += 1
+        expected = len(points) / dimensions / BIAS_BINS
+        density = [[n / expected for n in row] for row in counts]
+        ax.imshow(density, origin="lower", aspect="auto", cmap="RdBu_r", vmin=0.0, vmax=2.0,
+                  extent=(0.5, dimensions + 0.5, 0.0, 1.0), interpolation="nearest")
+        verdict = verdicts.get((problem, label)) or verdicts.get(("", label))
+        ax.set_title(label + (": " + verdict if verdict else ""), fontsize=7)
+        ax.set_xlabel("dimension")
+    for ax in axes[len(by_algorithm):]:
+        ax.set_visible(False)
+    axes[0].set_ylabel("final x")
+    fig.suptitle(folder.title(problem, "final best points per dimension, density / uniform "
+                                       "(white 1, red more, blue fewer)"),
+                 y=1 - 0.04 / fig.get_figheight(), va="top")
     return fig
 
 

@@ -153,7 +153,7 @@ std::vector<ComponentVerdict> component_verdicts(const std::vector<DesignEffects
     for (const auto& d : designs)
         for (const auto& analysis : d.analyses)
             for (const auto& e : analysis.effects) {
-                if (e.factors.size() != 1)
+                if (e.factors.size() != 1 || is_bias_problem(analysis.problem))
                     continue; // interactions stay in the effects table
                 ComponentVerdict c;
                 c.design = d.design.description();
@@ -190,7 +190,10 @@ BudgetVerdict budget_verdict(const StudyIndex& index, double alpha,
     verdict.budget = index.budget();
     verdict.alpha = alpha;
     for (const auto& p : index.problems())
-        verdict.problems.push_back(problem_verdict(index, p, alpha));
+        if (!is_bias_problem(p))
+            verdict.problems.push_back(problem_verdict(index, p, alpha));
+    for (auto& audit : structural_bias_audits(index, alpha))
+        verdict.bias.emplace_back(index.label(audit.algorithm), std::move(audit));
     verdict.across = across_verdict(index, verdict.problems, alpha);
     verdict.effects = component_verdicts(designs);
     return verdict;

@@ -13,7 +13,8 @@
 // ranks and blocks), the Friedman p-value, the Nemenyi critical difference where Demsar's table
 // has one, and each algorithm's count of problems where it is the best, not significantly
 // different from the best, or worse. Factorial designs: each main effect's reading from
-// factorial_effects (helps, hurts, no evidence), pooled over problems and per problem.
+// factorial_effects (helps, hurts, no evidence), pooled over problems and per problem. f0 problems
+// get the structural-bias audit (structural_bias.hpp) instead of a ranking and effects.
 #pragma once
 
 #include <cstddef>
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "results/analysis/factorial_effects.hpp"
+#include "results/analysis/structural_bias.hpp"
 #include "results/store/study_index.hpp" // runs, grouped: every room reads them here
 
 namespace mhb {
@@ -96,6 +98,9 @@ struct BudgetVerdict {
     std::vector<ProblemVerdict> problems;
     std::optional<AcrossVerdict> across; // two or more problems on which every algorithm ran
     std::vector<ComponentVerdict> effects;
+    // f0 problems are not ranked (no point is better than another): each algorithm's
+    // structural-bias audit instead, with its label.
+    std::vector<std::pair<std::string, BiasAudit>> bias;
 };
 
 // The verdict of the index's budget; `designs` are its factorial designs with their effects.

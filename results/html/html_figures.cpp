@@ -44,6 +44,11 @@ const std::vector<FigureKind>& figure_kinds() {
         {"effects_main_", "Main effects", "Mean response with each switch off and on."},
         {"effects_interaction_", "Two-way interactions",
          "Mean response of one switch off and on, one line per level of another."},
+        {"structural_bias_", "Structural bias on f0",
+         "The final best points on f0 (a random value at every evaluation), per dimension: each column a "
+         "histogram of one coordinate over the runs, coloured by its density relative to uniform (white: "
+         "as uniform, red: more, blue: fewer), a panel per algorithm titled with its verdict. A red band "
+         "at 0.5 is a pull to the centre, red rows at 0 and 1 a pull to the bounds."},
         {"", "Other figures", ""},
     };
     return kinds;

@@ -12,6 +12,7 @@
 #include "results/analysis/factorial_effects.hpp"
 #include "results/analysis/relative_gaps.hpp"
 #include "results/analysis/run_precision.hpp"
+#include "results/analysis/structural_bias.hpp"
 #include "results/analysis/verdict.hpp"
 #include "results/protocols/protocol_report.hpp"
 #include "results/report/report_figures.hpp"
@@ -26,6 +27,7 @@
 #include "results/tables/paper_tables.hpp"
 #include "results/tables/precision_table.hpp"
 #include "results/tables/relative_gap_table.hpp"
+#include "results/tables/structural_bias_table.hpp"
 #include "results/tables/verdict_tables.hpp"
 
 namespace mhb {
@@ -94,6 +96,8 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
         tables.push_back(std::move(t));
     if (auto effects = effects_table(designs, rejected, comparison.alpha))
         tables.push_back(std::move(*effects));
+    if (auto bias = structural_bias_table(index, comparison.alpha)) // f0: where the final points lie
+        tables.push_back(std::move(*bias));
     if (!index.budget().empty())
         for (auto& t : tables) {
             t.title += " [budget " + index.budget() + "]";
@@ -236,6 +240,9 @@ void write_curve_data(const StudyIndex& index, const std::string& budget, const 
                     designs.empty() ? std::nullopt : std::optional<std::string>(effect_means_csv(designs)));
     write_or_remove(dir / "relative_gap_medians.csv",
                     gaps ? std::optional<std::string>(relative_gap_medians_csv(index, *gaps)) : std::nullopt);
+    const std::optional<std::string> final_points = final_points_csv(index); // f0's structural bias
+    write_or_remove(dir / "final_points.csv", final_points);
+    files.final_points = final_points.has_value();
     std::error_code ec;
     // Tables a report may leave out: stale copies from an earlier report would mislead.
     for (const std::string& format : table_format_names()) {
@@ -243,6 +250,8 @@ void write_curve_data(const StudyIndex& index, const std::string& budget, const 
             fs::remove(dir / ("effects." + format), ec);
         if (!gaps)
             fs::remove(dir / ("relative_gaps." + format), ec);
+        if (!files.final_points)
+            fs::remove(dir / ("structural_bias." + format), ec);
     }
     files.critical_difference = critical_difference.has_value();
     files.effect_means = !designs.empty();

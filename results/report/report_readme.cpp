@@ -171,6 +171,21 @@ problems with a known, non-zero f*): one row per (problem, algorithm), problems 
 
 )";
 
+const char* const final_points_file = R"(### final_points.csv
+
+The final best points of the runs on f0 (the structural-bias audit, the `structural_bias` table
+and figure): one row per coordinate of each successful run's best point.
+
+| column | meaning |
+| --- | --- |
+| problem | the f0 problem (`f0:dim=30`) |
+| algorithm | the algorithm's label |
+| run | the run index |
+| dimension | the coordinate, from 1 |
+| x | its value in [0, 1] (best_x of runs.csv, every digit) |
+
+)";
+
 const char* const other_files = R"(## Other files
 
 - `ioh/`: the IOHprofiler export for IOHanalyzer, as IOHexperimenter's analyzer logger writes it
@@ -229,6 +244,8 @@ std::string report_readme(const std::vector<Table>& tables, const ReportFiles& f
         out += effect_means_file;
     if (files.relative_gaps)
         out += relative_gaps_file;
+    if (files.final_points)
+        out += final_points_file;
     out += other_files;
     if (files.cec)
         out += "- `cec/`: the CEC organisers' result files, a row per checkpoint and a column per run; its "

@@ -19,6 +19,7 @@ struct ReportFiles {
     bool critical_difference = false;
     bool effect_means = false;
     bool relative_gaps = false;
+    bool final_points = false; // f0's structural-bias audit
     bool cec = false;
     bool figures = false;
     bool budget_txt = false;

@@ -154,6 +154,15 @@ Lines problem_effects_lines(const std::vector<ComponentVerdict>& effects) {
     return out;
 }
 
+// "centre (KS 12/30, AD 15/30 dims; |x-0.5| 0.183; 3.1% near bounds)": uniform is 0.25 and 2%.
+std::string bias_evidence(const BiasAudit& audit) {
+    const std::string dims = std::to_string(audit.dimensions.size());
+    return audit.verdict + " (KS " + std::to_string(audit.ks_rejected) + "/" + dims + ", AD " +
+           std::to_string(audit.ad_rejected) + "/" + dims + " dims; |x-0.5| " +
+           format_fixed(audit.centre_distance, 3) + "; " + format_fixed(100.0 * audit.near_bound_share, 1) +
+           "% near bounds)";
+}
+
 void append(Lines& to, const Lines& from) {
     to.insert(to.end(), from.begin(), from.end());
 }
@@ -183,6 +192,11 @@ Lines per_problem_detail(const BudgetVerdict& verdict, std::size_t room) {
 
 std::vector<std::string> verdict_lines(const BudgetVerdict& verdict, std::size_t max_lines) {
     Lines lines = {budget_heading(verdict)};
+    if (!verdict.bias.empty()) // f0: where the final points lie, not a ranking
+        lines.push_back(
+            "Structural bias on f0 (final points against uniform; uniform: |x-0.5| 0.25, 2% near bounds):");
+    for (const auto& [label, audit] : verdict.bias)
+        lines.push_back("  " + label + ": " + bias_evidence(audit));
     if (verdict.problems.size() == 1) {
         append(lines, problem_block(verdict.problems.front()));
     } else {

@@ -1,6 +1,7 @@
 #include "runner/run/execute_run.hpp"
 
 #include <exception>
+#include <memory>
 #include <new>
 #include <optional>
 
@@ -41,12 +42,16 @@ RunRecord execute_run(const RunRequest& request) {
     record.run_index = request.run_index;
     record.budget = request.budget_text;
     record.seed = request.seed;
-    const Problem& problem = *request.problem;
+    // A problem random per run (f0) gives this run an instance of its own (ARCHITECTURE.md 4.1);
+    // declared before the Objective that refers to it, so that it outlives it.
+    std::unique_ptr<Problem> own_instance;
     // Outside the try, so that a failed run still records the evaluations it spent.
     std::optional<Objective> objective;
     // Everything that asks the problem or the optimiser anything is inside the try: a component
     // that throws fails its own run, never the study.
     try {
+        own_instance = request.problem->for_run(record.seed);
+        const Problem& problem = own_instance ? *own_instance : *request.problem;
         record.parameter_names = problem.parameter_names();
         if (const auto truth = problem.true_parameters())
             record.true_parameters = to_vector(*truth);

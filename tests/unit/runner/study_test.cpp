@@ -262,6 +262,17 @@ TEST(StudyPresets, PaperPresetIsThePapersSetup) {
     EXPECT_FALSE(s.budgets.front().target_error.has_value());
 }
 
+TEST(StudyPresets, BiasPresetAuditsItlbosEightVariantsOnF0) {
+    // ITLBO's 2^3 design as the ablation preset writes it, f0 at D = 30, 100 runs, 10^4 D evaluations.
+    const PreparedStudy bias = prepare_study(find_study_preset("bias").study);
+    EXPECT_EQ(bias.algorithms.size(), 8U);
+    ASSERT_EQ(bias.problems.size(), 1U);
+    EXPECT_EQ(bias.problems.front().spec, "f0:dim=30");
+    EXPECT_EQ(bias.study.runs, 100);
+    EXPECT_EQ(bias.budget_texts, (std::vector<std::string>{"evaluations=300000"}));
+    EXPECT_EQ(bias.algorithms.front().info.label, "itlbo[T+S+O+]");
+}
+
 TEST(StudyPresets, NamesAreUniqueUnknownNamesListTheKnownOnesAndEveryPresetIsValid) {
     std::set<std::string> names;
     std::string known;
