@@ -19,6 +19,7 @@ struct ReportFiles {
     bool critical_difference = false;
     bool effect_means = false;
     bool relative_gaps = false;
+    bool bayesian = false; // bayesian_probabilities.csv and bayesian_samples.csv
     bool cec = false;
     bool figures = false;
     bool budget_txt = false;
