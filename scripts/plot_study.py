@@ -525,7 +525,8 @@ def one_line(error):
 
 
 # Per panel, or per figure of a single panel: a convergence panel is 1.
-JOB_COST = {"parameters": 3.5, "effects": 2.0, "ecdf": 1.3, "final_values": 1.0, "critical_difference": 0.8}
+JOB_COST = {"parameters": 3.5, "bayesian": 3.0, "effects": 2.0, "ecdf": 1.3, "final_values": 1.0,
+            "critical_difference": 0.8}
 
 TEMPORARY = re.compile(r"^\..+\.tmp-([0-9]+)$")
 

@@ -1,12 +1,19 @@
 // The Bayesian reading of factorial effects (bayesian_effects.hpp).
 #include "results/analysis/bayesian_effects.hpp"
 
+#include <oneapi/tbb/parallel_for.h>
+
 #include "problems/core/rng.hpp" // stable_hash, mix64: a test's seed from its names
 #include "results/analysis/bayesian_signed_rank.hpp"
 
 namespace mhb {
 
 void add_bayesian_effects(std::vector<DesignEffects>& designs, double log10_rope) {
+    struct Job {
+        EffectEstimate* effect;
+        BayesianSignedRankOptions options;
+    };
+    std::vector<Job> jobs;
     for (auto& d : designs)
         for (auto& a : d.analyses) {
             if (a.scale == ResponseScale::log10_gap)
@@ -17,12 +24,16 @@ void add_bayesian_effects(std::vector<DesignEffects>& designs, double log10_rope
                 BayesianSignedRankOptions options;
                 options.rope = a.rope.value_or(0.0);
                 options.seed = mix64(stable_hash(d.design.description() + '\n' + a.problem + '\n' + e.name));
-                const BayesianSignedRank r = bayesian_signed_rank(e.per_block, options);
-                e.p_lowers = r.left;
-                e.p_no_effect = r.rope;
-                e.p_raises = r.right;
+                jobs.push_back({&e, options});
             }
         }
+    // In parallel: each test has its own seed and writes only its own effect.
+    tbb::parallel_for(std::size_t{0}, jobs.size(), [&](std::size_t i) {
+        const BayesianSignedRank r = bayesian_signed_rank(jobs[i].effect->per_block, jobs[i].options);
+        jobs[i].effect->p_lowers = r.left;
+        jobs[i].effect->p_no_effect = r.rope;
+        jobs[i].effect->p_raises = r.right;
+    });
 }
 
 } // namespace mhb

@@ -13,8 +13,8 @@
 namespace mhb::cli {
 
 inline constexpr const char* rope_option_help =
-    "half-width of the ROPE of the Bayesian signed-rank tests and effects, in decades of f - f* (default "
-    "0.1: gaps within a factor 1.26 are practically equal); a number >= 0";
+    "half-width of the ROPE of the Bayesian signed-rank tests and effects, in decades of f - f* (two runs "
+    "whose gaps differ by less are practically equal); a number >= 0";
 inline constexpr const char* raw_rope_option_help =
     "the ROPE's half-width in units of f, for problems without a known f* (default: none, no ROPE there)";
 
