@@ -6,8 +6,8 @@ Usage: plot_study.py REPORT_DIR            draw every figure
 
 Reads REPORT_DIR/algorithms.csv, problems.csv, budget.txt, curves_iteration.csv,
 curves_evaluations.csv, parameters_iteration.csv, final_values.csv, target_hits.csv,
-critical_difference.csv, effects.csv, effect_means.csv, relative_gap_medians.csv, final_points.csv
-and structural_bias.csv (written by
+critical_difference.csv, effects.csv, effect_means.csv, relative_gap_medians.csv, final_points.csv,
+structural_bias.csv, bayesian_probabilities.csv and bayesian_samples.csv (written by
 `mhbench report`) and writes NAME.pdf (vector, fonts embedded as TrueType, for a paper) and NAME.png
 (for the HTML page) to REPORT_DIR/figures/, with styles.csv (algorithm,label,colour,marker,linestyle:
 each algorithm's style, a function of its place in algorithms.csv, the same in every figure). A study
@@ -45,6 +45,10 @@ panel per problem (<kind>_all) for two to six problems (MOST_PANELS), else one f
   structural_bias_<problem>          f0's final best points as per-dimension histograms (density
                                      relative to uniform), a panel per algorithm titled with its
                                      verdict (final_points.csv and the structural_bias table)
+  bayesian_simplex_<problem>         the Bayesian signed-rank test's posterior samples of theta in
+                                     the simplex (Benavoli et al. 2017), a panel per algorithm
+                                     against the reference; of the test on all problems' medians
+                                     when there is one, else of each problem's
 Sizes: one column (3.5 in) for a single panel, two columns (7.16 in) for several; 8-9 pt serif
 (STIX, Times-like); PNG at 140 dpi (scripts/figure_style.py, shared with plot_flux_map.py). Figures
 are drawn by as many forked workers as the process may use CPUs (MHB_PLOT_WORKERS overrides), each
@@ -524,7 +528,8 @@ def one_line(error):
 
 
 # Per panel, or per figure of a single panel: a convergence panel is 1.
-JOB_COST = {"parameters": 3.5, "effects": 2.0, "ecdf": 1.3, "final_values": 1.0, "critical_difference": 0.8}
+JOB_COST = {"parameters": 3.5, "bayesian": 3.0, "effects": 2.0, "ecdf": 1.3, "final_values": 1.0,
+            "critical_difference": 0.8}
 
 TEMPORARY = re.compile(r"^\..+\.tmp-([0-9]+)$")
 
@@ -759,6 +764,9 @@ def plan_folder(report):
     verdicts = {(r.get("Problem", ""), r["Algorithm"]): r["Verdict"] for r in folder.read("structural_bias.csv")}
     for (problem,), rows in group(folder.read("final_points.csv"), "problem").items():
         add("structural_bias_" + slug(problem), "structural_bias", structural_bias_figure, problem, rows, verdicts)
+    tests = {(r["problem"], r["algorithm"]): r for r in folder.read("bayesian_probabilities.csv")}
+    for (problem,), rows in group(folder.read("bayesian_samples.csv"), "problem").items():
+        add("bayesian_simplex_" + slug(problem), "bayesian", bayesian_simplex, problem, rows, tests)
     return folder, jobs
 
 
@@ -1333,6 +1341,55 @@ def effects_overview(job, folder, design, rows):
 
 
 # ----------------------------------------------------------------------------------------------
+
+def simplex_xy(reference_better, equivalent):
+    """A point (theta_reference_better, theta_equivalent, theta_algorithm_better) of the simplex drawn
+    as an equilateral triangle: reference better at the bottom left, the algorithm at the bottom right,
+    equivalent (inside the ROPE) at the top."""
+    return 1 - reference_better - equivalent / 2, equivalent * math.sqrt(3) / 2
+
+
+def bayesian_simplex(job, folder, problem, rows, tests):
+    """Benavoli et al. (2017)'s simplex of the Bayesian signed-rank test: a panel per algorithm
+    against the reference, the posterior samples of theta as a cloud, the lines from the centre
+    splitting the triangle where each region's mass is the largest, each vertex with its probability."""
+    by_algorithm = group(rows, "algorithm")
+    cols = min(len(by_algorithm), 3)
+    nrows = math.ceil(len(by_algorithm) / cols)
+    fig = Figure(figsize=(COLUMN if cols == 1 else TWO_COLUMNS, 0.35 + 2.2 * nrows))
+    fig.subplots_adjust(left=0.02, right=0.98, top=1 - 0.35 / fig.get_figheight(), bottom=0.02, wspace=0.15)
+    centre = simplex_xy(1 / 3, 1 / 3)
+    for i, ((label,), samples) in enumerate(by_algorithm.items()):
+        ax = fig.add_subplot(nrows, cols, i + 1)
+        ax.set_aspect("equal")
+        ax.axis("off")
+        corners = [simplex_xy(1, 0), simplex_xy(0, 0), simplex_xy(0, 1), simplex_xy(1, 0)]
+        ax.plot([c[0] for c in corners], [c[1] for c in corners], color="black", linewidth=0.8)
+        for half in ((0.5, 0.5), (0.5, 0), (0, 0.5)):  # midpoints: two regions' masses equal
+            edge = simplex_xy(*half)
+            ax.plot([centre[0], edge[0]], [centre[1], edge[1]], color=NEUTRAL, linewidth=0.6, linestyle="--")
+        colour = folder.styles.of(label)[0]
+        xy = [simplex_xy(number(r["theta_reference_better"]), number(r["theta_equivalent"])) for r in samples]
+        ax.scatter([p[0] for p in xy], [p[1] for p in xy], s=2, color=colour, alpha=0.35, linewidths=0)
+        test = tests.get((problem, label), {})
+        reference = test.get("reference", "reference")
+
+        def probability(key, test=test):
+            return "P = %.3f" % number(test[key]) if key in test else ""
+
+        ax.text(0, -0.04, "%s better\n%s" % (reference, probability("p_reference_better")), ha="center",
+                va="top", fontsize=6.5)
+        ax.text(1, -0.04, "%s better\n%s" % (label, probability("p_algorithm_better")), ha="center",
+                va="top", fontsize=6.5)
+        ax.text(0.5, math.sqrt(3) / 2 + 0.03, "equivalent\n%s" % probability("p_equivalent"), ha="center",
+                va="bottom", fontsize=6.5)
+        ax.set_xlim(-0.25, 1.25)
+        ax.set_ylim(-0.25, 1.0)
+        ax.set_title("%s vs %s (ROPE %s)" % (label, reference, test.get("rope") or "none"), fontsize=7.5)
+    fig.suptitle("Bayesian signed-rank test, %s: posterior samples of theta%s" % (
+        folder.problems.name(problem), folder.suffix), y=1 - 0.04 / fig.get_figheight(), va="top", fontsize=8)
+    return fig
+
 
 def report_folders(report):
     budgets = read_rows(os.path.join(report, "budgets.csv"))

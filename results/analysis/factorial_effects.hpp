@@ -85,6 +85,12 @@ struct EffectEstimate {
     double adjusted_p = 1.0;
     EffectDirection direction = EffectDirection::none;
     std::string reading; // `direction` in words
+    // The Bayesian signed-rank test of the per-block effects against 0 with the analysis' ROPE
+    // (bayesian_effects.hpp; 0 until add_bayesian_effects): the switch (or interaction) lowers the
+    // response by more than the ROPE, changes it by less, raises it by more.
+    double p_lowers = 0.0;
+    double p_no_effect = 0.0;
+    double p_raises = 0.0;
 };
 
 // Mean response (over blocks) of the variants at one level of a factor, or at one pair of levels
@@ -106,6 +112,7 @@ struct EffectAnalysis {
     std::size_t infinite_runs = 0;       // runs of the kept blocks that ended at +inf (or -inf)
     bool paired = false;                 // every problem's runs paired by seed (common random numbers)
     std::vector<EffectEstimate> effects; // k main effects, then the k(k-1)/2 interactions
+    std::optional<double> rope;          // of the Bayesian readings: none on the rank scale
     std::vector<LevelMean> level_means;
 };
 

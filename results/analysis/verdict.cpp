@@ -164,6 +164,9 @@ std::vector<ComponentVerdict> component_verdicts(const std::vector<DesignEffects
                 c.scale = scale_name(analysis.scale);
                 c.adjusted_p = e.adjusted_p;
                 c.effect = component_effect(e.direction);
+                c.p_lowers = e.p_lowers;
+                c.p_no_effect = e.p_no_effect;
+                c.p_raises = e.p_raises;
                 out.push_back(c);
             }
     // The pooled verdict first: the one line per component a reader wants before the problems'.

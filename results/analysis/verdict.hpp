@@ -90,6 +90,11 @@ struct ComponentVerdict {
     std::string scale;     // "log10(f - f*)" or "within-block rank"
     double adjusted_p = 1.0;
     ComponentEffect effect = ComponentEffect::no_evidence;
+    // The Bayesian signed-rank test of the same per-block effects (bayesian_effects.hpp); all 0
+    // when it was not computed.
+    double p_lowers = 0.0;
+    double p_no_effect = 0.0;
+    double p_raises = 0.0;
 };
 
 struct BudgetVerdict {

@@ -38,6 +38,10 @@ const std::vector<FigureKind>& figure_kinds() {
         {"critical_difference", "Critical difference",
          "Friedman average ranks across problems with the Nemenyi critical difference (Demsar 2006); a bar "
          "joins algorithms that do not differ significantly."},
+        {"bayesian_simplex_", "Bayesian signed-rank tests",
+         "Posterior samples of theta (the masses of reference better, equivalent within the ROPE, algorithm "
+         "better) in the simplex, a panel per algorithm against the reference (Benavoli et al. 2017); the "
+         "dashed lines part the regions where each mass is the largest, the vertices give its probability."},
         {"effects_overview_", "Effects of the components: overview",
          "Every main effect and two-way interaction of a 2^k on/off design, per problem (mean over blocks; "
          "negative: lower f, the component helps; hatched: not significant after Holm)."},

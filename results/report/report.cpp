@@ -3,9 +3,11 @@
 #include "results/report/report.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 
+#include "results/analysis/bayesian_effects.hpp"
 #include "results/analysis/cec_protocol.hpp" // study_protocol: the `protocol =` line of study.ini
 #include "results/analysis/critical_difference.hpp"
 #include "results/analysis/curve_data.hpp"
@@ -22,6 +24,7 @@
 #include "results/store/csv.hpp"
 #include "results/store/study_index.hpp"
 #include "results/table_model/table.hpp"
+#include "results/tables/bayesian_table.hpp"
 #include "results/tables/comparison_tables.hpp"
 #include "results/tables/effects_table.hpp"
 #include "results/tables/paper_tables.hpp"
@@ -35,6 +38,10 @@ namespace mhb {
 namespace fs = std::filesystem;
 
 namespace {
+
+// Theta samples kept per Bayesian test for the simplex figures (of the 50 000 drawn): enough to
+// show the cloud's shape, few enough to keep bayesian_samples.csv small.
+constexpr std::size_t bayesian_figure_samples = 300;
 
 // As typed in a shell: as it is when that is safe, else single-quoted (a quote inside becomes '\'').
 std::string shell_quote(const std::string& text) {
@@ -50,6 +57,14 @@ std::string shell_quote(const std::string& text) {
 void check_options(const ReportOptions& options) {
     if (!(options.alpha > 0.0 && options.alpha < 1.0))
         throw std::invalid_argument("--alpha = " + format_number(options.alpha) + " is outside (0, 1)");
+    const auto outside = [](const char* name, double value) {
+        return std::string("--") + name + " = " +
+               (std::isnan(value) ? std::string("nan") : format_number(value)) + " is outside [0, inf)";
+    };
+    if (!(options.rope >= 0.0) || !std::isfinite(options.rope))
+        throw std::invalid_argument(outside("rope", options.rope));
+    if (options.raw_rope && (!(*options.raw_rope >= 0.0) || !std::isfinite(*options.raw_rope)))
+        throw std::invalid_argument(outside("raw-rope", *options.raw_rope));
     if (const std::optional<std::string> error = table_format_error(options.formats))
         throw std::invalid_argument(*error);
     if (options.errors == nullptr)
@@ -62,7 +77,8 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
                                  const std::vector<DesignCandidate>& rejected, bool list_algorithms,
                                  const std::vector<const SuiteProtocol*>& protocols,
                                  const std::optional<RelativeGaps>& gaps,
-                                 const std::optional<PrecisionRule>& precision) {
+                                 const std::optional<PrecisionRule>& precision,
+                                 const std::vector<BayesianComparison>& bayesian, const BayesianRope& rope) {
     std::vector<Table> tables;
     if (list_algorithms) {
         Table t;
@@ -86,6 +102,8 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
         tables.push_back(std::move(t));
     for (auto& t : comparison_tables(index, comparison))
         tables.push_back(std::move(t));
+    if (auto t = bayesian_table(index, comparison.reference, bayesian, rope)) // beside the tests
+        tables.push_back(std::move(*t));
     if (gaps) // problems on one scale: where the optimisers part
         tables.push_back(relative_gap_table(index, *gaps));
     if (auto runs = precision_table(index, precision)) // runs = auto: what each cell took
@@ -137,7 +155,7 @@ struct FactorialFindings {
     std::vector<DesignCandidate> rejected;
 };
 
-FactorialFindings factorial_findings(const StudyIndex& index, double alpha) {
+FactorialFindings factorial_findings(const StudyIndex& index, double alpha, double rope) {
     FactorialFindings found;
     for (auto& candidate : find_factorial_designs(index)) {
         if (!candidate.design) {
@@ -148,6 +166,7 @@ FactorialFindings factorial_findings(const StudyIndex& index, double alpha) {
         if (!effects.analyses.empty())
             found.designs.push_back(std::move(effects));
     }
+    add_bayesian_effects(found.designs, rope);
     return found;
 }
 
@@ -319,15 +338,26 @@ ReportFiles write_budget_tables(const StudyData& study, const std::string& budge
     ComparisonOptions comparison;
     comparison.reference = budget_reference(index, options, console);
     comparison.alpha = options.alpha;
-    const FactorialFindings factorial = factorial_findings(index, options.alpha);
+    const FactorialFindings factorial = factorial_findings(index, options.alpha, options.rope);
     say_budget_summary(study, budget, index, heading, comparison.reference, factorial, console);
     const std::vector<const SuiteProtocol*> protocols = study_protocols(study, console);
     console << '\n';
 
     const std::optional<RelativeGaps> gaps = relative_gaps(index);
+    // The Bayesian tests: for the table, bayesian_probabilities.csv and the simplex figures' samples.
+    const BayesianRope rope{options.rope, options.raw_rope};
+    const std::vector<BayesianComparison> bayesian =
+        bayesian_comparisons(index, comparison.reference, rope, bayesian_figure_samples);
+    write_or_remove(dir / "bayesian_probabilities.csv",
+                    bayesian.empty()
+                        ? std::nullopt
+                        : std::optional<std::string>(bayesian_csv(index, comparison.reference, bayesian)));
+    write_or_remove(dir / "bayesian_samples.csv",
+                    bayesian.empty() ? std::nullopt
+                                     : std::optional<std::string>(bayesian_samples_csv(index, bayesian)));
     const std::vector<Table> tables =
         budget_tables(index, comparison, factorial.designs, factorial.rejected, !study.algorithms.empty(),
-                      protocols, gaps, precision_rule_of(study.study_text));
+                      protocols, gaps, precision_rule_of(study.study_text), bayesian, rope);
     const BudgetVerdict verdict = budget_verdict(index, options.alpha, factorial.designs);
     const std::size_t budget_count = study_budgets(study).size();
     const BudgetReportContext context{
@@ -337,6 +367,7 @@ ReportFiles write_budget_tables(const StudyData& study, const std::string& budge
         reporter->write_tables(context);
     ReportFiles files;
     files.formats.assign(options.formats.begin(), options.formats.end());
+    files.bayesian = !bayesian.empty();
     write_curve_data(index, budget, dir, factorial.designs, gaps, options.alpha, files);
     remove_stale_pmsm_tables(dir, tables);
     console << "tables and curve data: " << dir.string() << '\n';

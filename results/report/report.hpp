@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "results/analysis/bayesian_comparisons.hpp" // default_log10_rope
 #include "results/exports/ioh_export.hpp"
 #include "results/reporters/reporter_registry.hpp"
 #include "results/store/study_data.hpp"
@@ -42,6 +43,10 @@ struct ReportOptions {
     std::optional<std::string> reference; // algorithm to test against (spec, label or unique name);
                                           // at a budget that did not run it, the default there
     double alpha = 0.05;                  // significance level of the markers
+    // Half-width of the ROPE of the Bayesian signed-rank tests (--rope): decades of f - f*; and in
+    // units of f for problems without a known f* (--raw-rope; none: no ROPE there).
+    double rope = default_log10_rope;
+    std::optional<double> raw_rope;
     // Table formats, by reporter name (results/reporters/): --format; every export is always written.
     std::set<std::string> formats = default_table_formats();
     bool figures = true;

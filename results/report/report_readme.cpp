@@ -186,6 +186,31 @@ and figure): one row per coordinate of each successful run's best point.
 
 )";
 
+const char* const bayesian_files = R"(### bayesian_probabilities.csv, bayesian_samples.csv
+
+The Bayesian signed-rank tests of the `bayesian` table (Benavoli, Corani, Demsar, Zaffalon, JMLR
+18, 2017): a row per test of an algorithm against the reference, per problem on the paired runs
+and, with two or more problems that all know f*, across problems on per-problem medians. The
+differences are reference - algorithm of the compared value, so "reference better" is the region
+left of -rope. Prior: strength 0.5 at 0; 50 000 Monte Carlo samples, seeded by the test's names.
+
+| column | meaning |
+| --- | --- |
+| problem | a problem, or `all problems (N)` for the test on the medians of N problems |
+| algorithm, reference | labels |
+| across_problems | 1 for the test on per-problem medians, else 0 |
+| scale | `log10_gap`: log10(max(f - f*, floor)), floor = max(1e-300, 4 eps abs(f*)); `f`: the final f (f* unknown) |
+| rope | the ROPE's half-width in the scale's units (decades for log10_gap); empty: no ROPE (raw f without --raw-rope) |
+| pairs | the paired differences (runs, or problems) |
+| p_reference_better, p_equivalent, p_algorithm_better | the share of the Monte Carlo samples of theta in which that region's posterior mass is the largest (ties shared); they sum to 1 |
+| theta_reference_better, theta_equivalent, theta_algorithm_better | the posterior means of the three masses |
+
+`bayesian_samples.csv` (problem, algorithm, sample, theta_reference_better, theta_equivalent,
+theta_algorithm_better): the first 300 Monte Carlo samples of theta of the across-problems tests
+(of every per-problem test when there are none), the points of the simplex figures.
+
+)";
+
 const char* const other_files = R"(## Other files
 
 - `ioh/`: the IOHprofiler export for IOHanalyzer, as IOHexperimenter's analyzer logger writes it
@@ -246,6 +271,8 @@ std::string report_readme(const std::vector<Table>& tables, const ReportFiles& f
         out += relative_gaps_file;
     if (files.final_points)
         out += final_points_file;
+    if (files.bayesian)
+        out += bayesian_files;
     out += other_files;
     if (files.cec)
         out += "- `cec/`: the CEC organisers' result files, a row per checkpoint and a column per run; its "

@@ -20,6 +20,7 @@ struct ReportFiles {
     bool effect_means = false;
     bool relative_gaps = false;
     bool final_points = false; // f0's structural-bias audit
+    bool bayesian = false;     // bayesian_probabilities.csv and bayesian_samples.csv
     bool cec = false;
     bool figures = false;
     bool budget_txt = false;

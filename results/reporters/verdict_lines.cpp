@@ -1,5 +1,6 @@
 #include "results/reporters/verdict_lines.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "results/table_model/table.hpp" // format_number, join
@@ -28,10 +29,15 @@ std::string right(const std::string& text, std::size_t width) {
 std::string count_text(double value) {
     if (!std::isfinite(value))
         return format_number(value);
-    std::string digits = std::to_string(static_cast<long long>(std::llround(value)));
-    for (std::size_t i = digits.size(); i > 3; i -= 3)
-        digits.insert(i - 3, " ");
-    return digits;
+    const long long n = std::llround(value);
+    const std::string digits = std::to_string(n < 0 ? -n : n);
+    std::string out = n < 0 ? "-" : "";
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) // a space before each group of three from the right
+            out += ' ';
+        out += digits[i];
+    }
+    return out;
 }
 
 // The rank of position i, right-aligned in the first five columns.
@@ -119,6 +125,16 @@ Lines across_block(const AcrossVerdict& across, std::size_t room) {
     return out;
 }
 
+// The Bayesian reading of a component in a few words: the region its posterior favours most,
+// "   P(raises f) = 1.00" (empty when the test was not computed).
+std::string bayesian_words(const ComponentVerdict& e) {
+    if (e.p_lowers + e.p_no_effect + e.p_raises == 0.0)
+        return "";
+    const double most = std::max({e.p_lowers, e.p_no_effect, e.p_raises});
+    const char* region = most == e.p_lowers ? "lowers f" : (most == e.p_raises ? "raises f" : "no effect");
+    return std::string("   P(") + region + ") = " + format_fixed(most, 2);
+}
+
 // The main effects of each design on one analysis (pooled or a problem): a heading and a line each.
 Lines pooled_effects_block(const std::vector<ComponentVerdict>& effects) {
     Lines out;
@@ -131,7 +147,8 @@ Lines pooled_effects_block(const std::vector<ComponentVerdict>& effects) {
             last = e.design + e.problem;
         }
         out.push_back("    " + padded(e.component, 18) + padded(component_effect_text(e.effect), 13) +
-                      right(format_number(e.mean, 3), 9) + "   " + p_text(e.adjusted_p) + " (Holm)");
+                      right(format_number(e.mean, 3), 9) + "   " + p_text(e.adjusted_p) + " (Holm)" +
+                      bayesian_words(e));
     }
     return out;
 }

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <string>
 
+#include "results/analysis/bayesian_signed_rank.hpp"
 #include "results/table_model/latex_escape.hpp" // escaping lives beside the model
 
 namespace mhb {
@@ -55,14 +56,31 @@ EffectNotes add_effect_rows(Table& t, const std::vector<DesignEffects>& designs)
                            number_cell(static_cast<double>(a.blocks), 6), text_cell(a.paired ? "yes" : "no"),
                            effect, number_cell(e.mean, 4), number_cell(e.median, 4), test,
                            number_cell(e.test.statistic, 6), number_cell(e.test.p_value, 3),
-                           number_cell(e.adjusted_p, 3), text_cell(e.reading)});
+                           number_cell(e.adjusted_p, 3), text_cell(e.reading), fixed_cell(e.p_lowers, 3),
+                           fixed_cell(e.p_no_effect, 3), fixed_cell(e.p_raises, 3)});
             }
         }
     return notes;
 }
 
-std::string effects_caption(const EffectNotes& notes, const std::vector<DesignCandidate>& rejected,
-                            double alpha) {
+// What the Bayesian columns are, with the ROPE of the log10 scale when an analysis has one.
+std::string bayesian_effects_note(const std::vector<DesignEffects>& designs) {
+    std::optional<double> rope;
+    for (const auto& d : designs)
+        for (const auto& a : d.analyses)
+            rope = rope ? rope : a.rope;
+    return " P(lowers f), P(no practical effect), P(raises f): the Bayesian signed-rank test (Benavoli et "
+           "al. 2017, prior strength 0.5 at 0, " +
+           std::to_string(bayesian_default_samples) +
+           " seeded Monte Carlo samples) of the per-block effects against 0, each the posterior probability "
+           "that the effect's Walsh averages lie mostly left of -ROPE, inside [-ROPE, ROPE] or right of "
+           "+ROPE; ROPE " +
+           (rope ? format_number(*rope, 4) + " decades on the log10 scale (--rope)" : std::string("")) +
+           (rope ? "; " : "") + "none on the rank scale (only zero effects count as no effect).";
+}
+
+std::string effects_caption(const EffectNotes& notes, const std::vector<DesignEffects>& designs,
+                            const std::vector<DesignCandidate>& rejected, double alpha) {
     std::string caption =
         "Variants of one algorithm forming a full 2^k factorial design over on/off switches. Response per "
         "run: "
@@ -92,6 +110,7 @@ std::string effects_caption(const EffectNotes& notes, const std::vector<DesignCa
             "use the within-block rank scale, since log10(inf - f*) = inf would make every effect inf "
             "or undefined): " +
             join(notes.infinite, ", ") + ".";
+    caption += bayesian_effects_note(designs);
     for (const auto& r : rejected)
         caption += " Not a full factorial: " + r.name + " (" + r.why_not + ").";
     return caption;
@@ -115,6 +134,9 @@ void lay_out_effects_for_latex(Table& t) {
     for (const std::size_t c : {std::size_t{8}, std::size_t{9}, std::size_t{10}, std::size_t{11}})
         t.latex_column(c).group = "test";
     t.latex_column(12).group = "reading";
+    for (const std::size_t c : {std::size_t{13}, std::size_t{14}, std::size_t{15}})
+        t.latex_column(c).group = "Bayesian signed-rank";
+    t.latex_column(14).header = "P(no practical\\\\effect)";
     t.latex_column(10).header = "$p$";
     t.latex_column(11).header = "$p$\\\\(Holm)";
 }
@@ -126,12 +148,14 @@ std::optional<Table> effects_table(const std::vector<DesignEffects>& designs,
     Table t;
     t.id = "effects";
     t.title = "Effect of each component: main effects and two-way interactions";
-    t.header = {"Design", "Problem", "Scale", "Blocks", "Paired",   "Effect", "Mean",
-                "Median", "Test",    "V",     "p",      "p (Holm)", "Reading"};
+    t.header = {"Design",     "Problem",  "Scale",   "Blocks",      "Paired",
+                "Effect",     "Mean",     "Median",  "Test",        "V",
+                "p",          "p (Holm)", "Reading", "P(lowers f)", "P(no practical effect)",
+                "P(raises f)"};
     const EffectNotes notes = add_effect_rows(t, designs);
     if (t.rows.empty())
         return std::nullopt;
-    t.caption = effects_caption(notes, rejected, alpha);
+    t.caption = effects_caption(notes, designs, rejected, alpha);
     lay_out_effects_for_latex(t);
     format_columns(t);
     return t;

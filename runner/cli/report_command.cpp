@@ -17,6 +17,7 @@
 #include "runner/cli/command.hpp"
 #include "runner/cli/format_option.hpp"
 #include "runner/cli/parse_command_line.hpp"
+#include "runner/cli/rope_option.hpp"
 #include "runner/execution/companion_files.hpp"
 #include "runner/execution/study_lock.hpp"
 
@@ -87,7 +88,8 @@ po::options_description report_options(ReportCommandLine& given) {
         "    per problem (the same for every algorithm); Wilcoxon rank-sum (and, for paired runs,\n"
         "    signed-rank) tests against a reference with Holm correction and Vargha-Delaney A12; the\n"
         "    problems-by-algorithms table of medians (IQR) with the tests' +/=/- markers and w/t/l\n"
-        "    counts; Friedman ranks and Wilcoxon signed-rank across problems;\n"
+        "    counts; Friedman ranks and Wilcoxon signed-rank across problems; the Bayesian signed-rank\n"
+        "    test (P(reference better), P(equivalent within --rope), P(algorithm better));\n"
         "  - each table as Markdown, CSV and LaTeX (laid out to fit a journal's page; report.tex holds\n"
         "    them all and compiles with pdflatex and TeX Live's latex-base and latex-recommended);\n"
         "  - curve data (CSV) and figures (PDF for a paper and PNG, needs matplotlib: apt install\n"
@@ -107,6 +109,8 @@ po::options_description report_options(ReportCommandLine& given) {
         "algorithm the tests compare against: a full spec or a name of the study (default: itlbo, else the "
         "first algorithm)")("alpha", po::value(&given.alpha)->default_value(0.05, "0.05"),
                             "significance level of the +/=/- markers, in (0, 1)")(
+        "rope", po::value<double>()->default_value(default_log10_rope, format_number(default_log10_rope)),
+        rope_option_help)("raw-rope", po::value<double>(), raw_rope_option_help)(
         "no-figures", "write tables and curve data only (index.html says so; it shows figures an earlier "
                       "report drew, marked as such)")(
         "open", "print index.html's path and open it in a browser (xdg-open) when a display is available")(
@@ -127,6 +131,7 @@ ReportOptions report_options_of(const ReportCommandLine& given, const po::variab
     if (!given.reference.empty())
         options.reference = given.reference;
     options.alpha = given.alpha;
+    set_rope_options(vm, options);
     options.figures = vm.count("no-figures") == 0;
     options.console_tables = vm.count("tables") != 0;
     options.formats = parse_format_option(given.formats);

@@ -31,6 +31,7 @@
 #include "runner/cli/command.hpp"
 #include "runner/cli/format_option.hpp"
 #include "runner/cli/parse_command_line.hpp"
+#include "runner/cli/rope_option.hpp"
 #include "runner/cli/run_options.hpp"
 #include "runner/distribution/distributed.hpp"
 #include "runner/distribution/shards.hpp"
@@ -153,6 +154,8 @@ RunSettings check_run_settings(const po::variables_map& vm, std::vector<std::str
     // Checked now, not when the report is built after the whole study has run.
     settings.formats = parse_format_option(vm["format"].as<std::string>());
     if (const std::optional<std::string> error = table_format_error(settings.formats))
+        errors.push_back(*error);
+    if (const std::optional<std::string> error = rope_option_error(vm))
         errors.push_back(*error);
     return settings;
 }
@@ -371,6 +374,7 @@ int build_study_report(const std::filesystem::path& dir, const po::variables_map
     report.formats = settings.formats;
     report.figures = !vm["no-figures"].as<bool>();
     report.console_tables = vm["tables"].as<bool>();
+    set_rope_options(vm, report);
     report.plot_script = companion_file("scripts/plot_study.py");
     report.stop = &stop_requested; // a Ctrl-C during the tables starts no figure
     std::ostringstream discarded;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "runner/cli/format_option.hpp"
+#include "runner/cli/rope_option.hpp"
 #include "runner/study/study_file.hpp"
 #include "runner/study/study_options.hpp"
 #include "runner/study/study_presets.hpp"
@@ -61,6 +62,8 @@ po::options_description make_run_options() {
                                          "`mhbench report DIR` builds it at any time")
         ("no-figures", po::bool_switch(), "build the report without figures (they take most of its time)")
         ("format", po::value<std::string>()->default_value(default_format_option()), format_option_help().c_str())
+        ("rope", po::value<double>()->default_value(default_log10_rope, format_number(default_log10_rope)), rope_option_help)
+        ("raw-rope", po::value<double>(), raw_rope_option_help)
         ("tables", po::bool_switch(), "print every table of the report in Markdown before its verdict (the files hold them either way)")
         ("quiet,q", po::bool_switch(), "print nothing but errors (no progress bar, no summary, no verdict)");
     // clang-format on

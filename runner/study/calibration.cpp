@@ -182,9 +182,10 @@ constexpr double parameters_seconds = 0.245; // four panels; + per algorithm:
 constexpr double parameters_per_algorithm = 0.015;
 constexpr double final_values_seconds = 0.04; // a panel; + per algorithm:
 constexpr double final_values_per_algorithm = 0.01;
-constexpr double ecdf_seconds = 0.14;    // the problems pooled
-constexpr double ranks_seconds = 0.07;   // critical difference, relative gaps
-constexpr double effects_seconds = 0.16; // each of the three figures of a factorial design
+constexpr double ecdf_seconds = 0.14;           // the problems pooled
+constexpr double ranks_seconds = 0.07;          // critical difference, relative gaps
+constexpr double effects_seconds = 0.16;        // each of the three figures of a factorial design
+constexpr double bayesian_panel_seconds = 0.06; // a simplex panel (an algorithm against the reference)
 // The tables and curve data: measured `mhbench report --no-figures` of the paper (60 runs) and
 // ablation (960 runs) presets.
 constexpr double tables_seconds_base = 0.05;
@@ -227,6 +228,18 @@ bool factorial_grid(const PreparedStudy& study) {
     return true;
 }
 
+// The Bayesian simplex figures of one budget (results/analysis/bayesian_comparisons.hpp): one for
+// the test on all problems' medians (two or more problems, all with f*), else one per problem where
+// the runs pair by seed; a panel per algorithm but the reference.
+std::int64_t bayesian_simplex_figures(const PreparedStudy& study, std::size_t known) {
+    const std::size_t problems = study.problems.size();
+    if (study.algorithms.size() < 2)
+        return 0;
+    if (problems >= 2 && known == problems)
+        return 1;
+    return study.study.seeds == SeedMode::common ? static_cast<std::int64_t>(problems) : 0;
+}
+
 } // namespace
 
 std::int64_t ReportEstimate::figure_count() const {
@@ -253,7 +266,7 @@ ReportEstimate estimate_report(const PreparedStudy& study, bool figures) {
         known += p.problem->known_optimum().has_value() ? 1U : 0U;
         identified += p.problem->parameter_names().empty() ? 0U : 1U;
     }
-    std::int64_t convergence = 0, parameters = 0, finals = 0, ecdf = 0, ranks = 0, effects = 0;
+    std::int64_t convergence = 0, parameters = 0, finals = 0, ecdf = 0, ranks = 0, effects = 0, bayesian = 0;
     double panels = 0; // of the kinds drawn per problem, weighted by their cost
     for (const StudyBudget& budget : study.study.budgets) {
         const std::int64_t convergence_kinds =
@@ -271,15 +284,17 @@ ReportEstimate estimate_report(const PreparedStudy& study, bool figures) {
             (known >= 2 ? 1 : 0) + (known >= 1 && (budget.target_error || budget.relative_target) ? 1 : 0);
         ranks += problems >= 2 && study.algorithms.size() >= 2 ? 1 : 0;
         effects += factorial_grid(study) ? 3 : 0;
+        bayesian += bayesian_simplex_figures(study, known);
     }
-    estimate.figures = {{"convergence", convergence},   {"parameters", parameters},
-                        {"final_values", finals},       {"ecdf", ecdf},
-                        {"critical_difference", ranks}, {"effects", effects}};
+    estimate.figures = {
+        {"convergence", convergence},   {"parameters", parameters}, {"final_values", finals}, {"ecdf", ecdf},
+        {"critical_difference", ranks}, {"effects", effects},       {"bayesian", bayesian}};
     const double cpu =
         panels +
         static_cast<double>(parameters) * (parameters_seconds + parameters_per_algorithm * algorithms) +
         static_cast<double>(ecdf) * ecdf_seconds + static_cast<double>(ranks) * ranks_seconds +
-        static_cast<double>(effects) * effects_seconds;
+        static_cast<double>(effects) * effects_seconds +
+        static_cast<double>(bayesian) * (algorithms - 1.0) * bayesian_panel_seconds;
     // Measured on the reference VM: scaled by how much slower or faster this machine does the same
     // work, as the runs' estimate times the study's own runs here.
     estimate.speed_ratio = reference_work_seconds() / reference_work_seconds_there;

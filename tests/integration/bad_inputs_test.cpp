@@ -488,6 +488,12 @@ std::vector<BadInputCase> catalogue() {
          stderr_says({"mhbench report: s/study.ini: cannot be read (Is a directory)"})},
         {study_copy, "report s --alpha 0 --no-figures", 2, stderr_says({"mhbench report: --alpha = 0 is outside (0, 1)"})},
         {study_copy, "report s --reference cmaes --no-figures", 2, one_line("the study has: ")},
+        // the ROPE of the Bayesian signed-rank tests (issue 38): a half-width, never negative or NaN
+        {study_copy, "report s --rope -0.5 --no-figures", 2,
+         stderr_says({"mhbench report: --rope = -0.5 is outside [0, inf)"})},
+        {study_copy, "report s --raw-rope nan --no-figures", 2,
+         stderr_says({"mhbench report: --raw-rope = nan is outside [0, inf)"})},
+        {"", "run --algorithms random-search" + tiny_run + " --rope -1", 2, one_line("rope = -1 is outside [0, inf)")},
         {study_copy, "report s --format pdf --no-figures", 2,
          stderr_says({"mhbench report: --format: 'pdf' is not one of md, tex, csv"})},
         {"", "run --algorithms random-search" + tiny_run + " --format md,pdf", 2,

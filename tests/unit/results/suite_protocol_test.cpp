@@ -122,7 +122,7 @@ TEST(SuiteProtocolReport, TheReportOfAStudyFollowingItAddsItsTable) {
     options.console_tables = true; // --tables: its table on the console too
     std::ostringstream console;
     (void)build_report(load_study(dir), options, console);
-    const std::string table = read_text(dir / "report" / "tiny_runs.md");
+    const std::string table = test_support::read_text(dir / "report" / "tiny_runs.md");
     EXPECT_NE(table.find("Runs per problem (protocol tiny)"), std::string::npos) << table;
     EXPECT_NE(table.find("sphere:dim=3"), std::string::npos) << table;
     EXPECT_NE(console.str().find("Runs per problem (protocol tiny)"), std::string::npos);

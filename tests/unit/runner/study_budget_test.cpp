@@ -384,7 +384,8 @@ TEST(StudyBudget, TheReportEstimateCountsTheFiguresAsTheScriptPlansThem) {
         {"final_values", 2},
         {"ecdf", 3}, // COCO's targets twice, the study's once
         {"critical_difference", 2},
-        {"effects", 0}};
+        {"effects", 0},
+        {"bayesian", 2}}; // the test on both problems' medians, at each budget
     EXPECT_EQ(two.figures, expected);
     EXPECT_GT(two.speed_ratio, 0.0);
     EXPECT_GT(two.figures_seconds, 0.0);
