@@ -38,6 +38,9 @@ const std::vector<FigureKind>& figure_kinds() {
         {"critical_difference", "Critical difference",
          "Friedman average ranks across problems with the Nemenyi critical difference (Demsar 2006); a bar "
          "joins algorithms that do not differ significantly."},
+        {"overhead", "Time per evaluation",
+         "Median wall time per evaluation against the dimension (log-log), one line per algorithm: COCO's "
+         "timing experiment (mhbench run --study timing); machine-dependent."},
         {"effects_overview_", "Effects of the components: overview",
          "Every main effect and two-way interaction of a 2^k on/off design, per problem (mean over blocks; "
          "negative: lower f, the component helps; hatched: not significant after Holm)."},
