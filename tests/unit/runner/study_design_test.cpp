@@ -298,7 +298,7 @@ TEST(StudyDesign, TheTimingPresetTimesTheSphereAtCocosDimensions) {
                                         "sphere:dim=20", "sphere:dim=40", "sphere:dim=100"}));
     EXPECT_EQ(timing.algorithms.size(), 11u);
     EXPECT_EQ(timing.algorithms.front().info.spec, "random-search"); // the floor, first
-    EXPECT_EQ(timing.budget_texts, (std::vector<std::string>{"evaluations=100000"}));
+    EXPECT_EQ(timing.budget_texts, (std::vector<std::string>{"evaluations=200000"}));
 }
 
 // Issue 35's presets: the flux map against every optimiser at two budgets, and the ladder of three
