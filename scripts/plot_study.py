@@ -7,7 +7,7 @@ Usage: plot_study.py REPORT_DIR            draw every figure
 Reads REPORT_DIR/algorithms.csv, problems.csv, budget.txt, curves_iteration.csv,
 curves_evaluations.csv, parameters_iteration.csv, final_values.csv, target_hits.csv,
 critical_difference.csv, effects.csv, effect_means.csv, relative_gap_medians.csv, final_points.csv,
-structural_bias.csv, bayesian_probabilities.csv and bayesian_samples.csv (written by
+structural_bias.csv, bayesian_probabilities.csv, bayesian_samples.csv and overhead.csv (written by
 `mhbench report`) and writes NAME.pdf (vector, fonts embedded as TrueType, for a paper) and NAME.png
 (for the HTML page) to REPORT_DIR/figures/, with styles.csv (algorithm,label,colour,marker,linestyle:
 each algorithm's style, a function of its place in algorithms.csv, the same in every figure). A study
@@ -36,6 +36,8 @@ panel per problem (<kind>_all) for two to six problems (MOST_PANELS), else one f
                                      convergence figure shows the same runs
   relative_gaps                      median relative gap per problem, one line per algorithm (a
                                      budget with a relative target and two or more such problems)
+  overhead                           median wall time per evaluation vs dimension (log-log), one line
+                                     per algorithm (overhead.csv, when an algorithm ran at 3+ dimensions)
   critical_difference                Friedman average ranks with the Nemenyi critical difference
   effects_overview_<design>          every effect of a 2^k design per problem as a bar, hatched when
                                      not significant after Holm
@@ -752,6 +754,9 @@ def plan_folder(report):
     ranks = folder.read("critical_difference.csv")
     if ranks:
         add("critical_difference", "critical_difference", critical_difference_figure, ranks)
+    timing = folder.read("overhead.csv")
+    if any(len({r["Dimension"] for r in rows}) >= 3 for rows in group(timing, "Algorithm").values()):
+        add("overhead", "overhead", overhead_figure, timing)
     means = folder.read("effect_means.csv")
     effects = folder.read("effects.csv")
     readings = {(r["Design"], r["Problem"], r["Effect"]): r["Reading"] for r in effects}
@@ -1146,6 +1151,28 @@ def structural_bias_figure(job, folder, problem, rows, verdicts):
     fig.suptitle(folder.title(problem, "final best points per dimension, density / uniform "
                                        "(white 1, red more, blue fewer)"),
                  y=1 - 0.04 / fig.get_figheight(), va="top")
+    return fig
+
+
+def overhead_figure(job, folder, rows):
+    """COCO's timing figure: median wall time per evaluation against the dimension (log-log), one line
+    per algorithm, from the report's overhead table (a study of the sphere at several dimensions)."""
+    by_algorithm = group(rows, "Algorithm")
+    labels = list(by_algorithm)
+    fig, (ax,), ncol = new_figure(COLUMN, legend_labels=[label for (label,) in labels], panel_height=2.0)
+    left_out = LeftOut()
+    handles = []
+    for i, ((label,), r) in enumerate(by_algorithm.items()):
+        points = sorted((number(row["Dimension"]), number(row["Median time per evaluation (us)"])) for row in r)
+        points = [(d, t) for d, t in points if left_out.keep(d, True) and left_out.keep(t, True)]
+        handles.append(algorithm_line(ax, folder, label, [d for d, _ in points], [t for _, t in points], True, i))
+    log_axis(ax, "x")
+    log_axis(ax, "y")
+    ax.set_xlabel("dimension")
+    ax.set_ylabel("wall time per evaluation (us)")
+    ax.set_title("Time per evaluation (COCO's timing)" + folder.suffix)
+    shared_legend(fig, handles, [h.get_label() for h in handles], ncol)
+    finish_note(job, ax, left_out, True, "times")
     return fig
 
 

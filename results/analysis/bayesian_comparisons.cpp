@@ -13,11 +13,6 @@ namespace mhb {
 
 namespace {
 
-// Every run of the group knows f*: the log10 gap is defined for it.
-bool knows_optimum(const RunGroup& g) {
-    return std::all_of(g.runs.begin(), g.runs.end(), [](const RunRecord* r) { return r->f_opt.has_value(); });
-}
-
 double compared_value(const RunRecord& r, bool log10_gap) {
     return log10_gap ? gap_response(r.best_f, *r.f_opt) : r.best_f;
 }
@@ -48,7 +43,7 @@ std::optional<BayesianComparison> on_problem(const StudyIndex& index, const std:
     c.paired = index.paired(problem);
     const RunGroup& ref = *index.find(problem, reference);
     const RunGroup& other = *index.find(problem, algorithm);
-    c.log10_gap = knows_optimum(ref) && knows_optimum(other);
+    c.log10_gap = ref.optimum_known() && other.optimum_known();
     c.rope = c.log10_gap ? std::optional<double>(rope.log10_gap) : rope.raw;
     if (!c.paired)
         return c;
@@ -80,7 +75,7 @@ std::optional<BayesianComparison> across_problems(const StudyIndex& index, const
         const RunGroup* other = index.find(p, algorithm);
         if (ref == nullptr || other == nullptr)
             continue;
-        if (!knows_optimum(*ref) || !knows_optimum(*other))
+        if (!ref->optimum_known() || !other->optimum_known())
             return std::nullopt; // raw f of different problems are not one scale
         x.push_back(median_value(*ref));
         y.push_back(median_value(*other));

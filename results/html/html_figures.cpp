@@ -42,6 +42,9 @@ const std::vector<FigureKind>& figure_kinds() {
          "Posterior samples of theta (the masses of reference better, equivalent within the ROPE, algorithm "
          "better) in the simplex, a panel per algorithm against the reference (Benavoli et al. 2017); the "
          "dashed lines part the regions where each mass is the largest, the vertices give its probability."},
+        {"overhead", "Time per evaluation",
+         "Median wall time per evaluation against the dimension (log-log), one line per algorithm: COCO's "
+         "timing experiment (mhbench run --study timing); machine-dependent."},
         {"effects_overview_", "Effects of the components: overview",
          "Every main effect and two-way interaction of a 2^k on/off design, per problem (mean over blocks; "
          "negative: lower f, the component helps; hatched: not significant after Holm)."},

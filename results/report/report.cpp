@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -24,9 +26,11 @@
 #include "results/store/csv.hpp"
 #include "results/store/study_index.hpp"
 #include "results/table_model/table.hpp"
+#include "results/tables/anytime_tables.hpp"
 #include "results/tables/bayesian_table.hpp"
 #include "results/tables/comparison_tables.hpp"
 #include "results/tables/effects_table.hpp"
+#include "results/tables/overhead_table.hpp"
 #include "results/tables/paper_tables.hpp"
 #include "results/tables/precision_table.hpp"
 #include "results/tables/relative_gap_table.hpp"
@@ -78,7 +82,8 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
                                  const std::vector<const SuiteProtocol*>& protocols,
                                  const std::optional<RelativeGaps>& gaps,
                                  const std::optional<PrecisionRule>& precision,
-                                 const std::vector<BayesianComparison>& bayesian, const BayesianRope& rope) {
+                                 const std::vector<BayesianComparison>& bayesian, const BayesianRope& rope,
+                                 const std::map<std::int64_t, double>& wall_seconds) {
     std::vector<Table> tables;
     if (list_algorithms) {
         Table t;
@@ -116,6 +121,11 @@ std::vector<Table> budget_tables(const StudyIndex& index, const ComparisonOption
         tables.push_back(std::move(*effects));
     if (auto bias = structural_bias_table(index, comparison.alpha)) // f0: where the final points lie
         tables.push_back(std::move(*bias));
+    // Anytime measures: the area under the ECDF of targets, the ERT per target with COCO's
+    // bootstrap, and the time per evaluation where the study has timings.
+    for (auto& t : {ecdf_area_table(index), ert_table(index), overhead_table(index, wall_seconds)})
+        if (t)
+            tables.push_back(*t);
     if (!index.budget().empty())
         for (auto& t : tables) {
             t.title += " [budget " + index.budget() + "]";
@@ -240,6 +250,16 @@ void write_or_remove(const fs::path& path, const std::optional<std::string>& con
         fs::remove(path, ec);
 }
 
+// The files of the optional tables `ids` that this report did not make: stale copies would mislead.
+void remove_absent_tables(const fs::path& dir, const std::vector<Table>& tables,
+                          std::initializer_list<const char*> ids) {
+    std::error_code ec;
+    for (const char* id : ids)
+        if (std::none_of(tables.begin(), tables.end(), [&](const Table& t) { return t.id == id; }))
+            for (const std::string& format : table_format_names())
+                fs::remove(dir / (std::string(id) + "." + format), ec);
+}
+
 // The budget's curve data and statistics for the figures, and budget.txt; says which of the
 // optional files were written.
 void write_curve_data(const StudyIndex& index, const std::string& budget, const fs::path& dir,
@@ -355,9 +375,9 @@ ReportFiles write_budget_tables(const StudyData& study, const std::string& budge
     write_or_remove(dir / "bayesian_samples.csv",
                     bayesian.empty() ? std::nullopt
                                      : std::optional<std::string>(bayesian_samples_csv(index, bayesian)));
-    const std::vector<Table> tables =
-        budget_tables(index, comparison, factorial.designs, factorial.rejected, !study.algorithms.empty(),
-                      protocols, gaps, precision_rule_of(study.study_text), bayesian, rope);
+    const std::vector<Table> tables = budget_tables(
+        index, comparison, factorial.designs, factorial.rejected, !study.algorithms.empty(), protocols, gaps,
+        precision_rule_of(study.study_text), bayesian, rope, study.wall_seconds);
     const BudgetVerdict verdict = budget_verdict(index, options.alpha, factorial.designs);
     const std::size_t budget_count = study_budgets(study).size();
     const BudgetReportContext context{
@@ -370,6 +390,7 @@ ReportFiles write_budget_tables(const StudyData& study, const std::string& budge
     files.bayesian = !bayesian.empty();
     write_curve_data(index, budget, dir, factorial.designs, gaps, options.alpha, files);
     remove_stale_pmsm_tables(dir, tables);
+    remove_absent_tables(dir, tables, {"ecdf_area", "ert", "overhead"});
     console << "tables and curve data: " << dir.string() << '\n';
     for (const Reporter* reporter : reporters)
         reporter->write_budget(context);

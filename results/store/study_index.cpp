@@ -69,6 +69,11 @@ std::vector<double> RunGroup::final_values() const {
     return values;
 }
 
+bool RunGroup::optimum_known() const {
+    return !runs.empty() &&
+           std::all_of(runs.begin(), runs.end(), [](const RunRecord* r) { return r->f_opt.has_value(); });
+}
+
 const RunRecord* RunGroup::run_with_index(std::int64_t run_index) const {
     const auto it = std::lower_bound(runs.begin(), runs.end(), run_index,
                                      [](const RunRecord* r, std::int64_t i) { return r->run_index < i; });

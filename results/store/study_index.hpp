@@ -42,6 +42,8 @@ struct RunGroup {
     std::size_t failed = 0;
 
     [[nodiscard]] std::vector<double> final_values() const;
+    // Every successful run knows f* (so the log10 gap is defined for each); false without runs.
+    [[nodiscard]] bool optimum_known() const;
     // The successful run with this run index, or nullptr.
     [[nodiscard]] const RunRecord* run_with_index(std::int64_t run_index) const;
 };

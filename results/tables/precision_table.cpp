@@ -45,7 +45,7 @@ std::vector<CellReading> read_cells(const StudyIndex& index, const PrecisionRule
             cell.algorithm = algorithm;
             cell.runs = static_cast<std::int64_t>(group->runs.size() + group->failed);
             cell.reference = algorithm == reference;
-            cell.optimum_known = !group->runs.empty() && group->runs.front()->f_opt.has_value();
+            cell.optimum_known = group->optimum_known();
             if (!cell.reference || alone)
                 cell.point = stopping_point(values_by_index(*group), alone ? nullptr : &ref_values,
                                             index.paired(problem), rule);

@@ -289,6 +289,18 @@ TEST(StudyDesign, ShippedPresetsAreStudyFilesAndTheAblationIsTheFullFactorial) {
         EXPECT_NO_THROW((void)prepare_study(find_study_preset(name).study)) << name;
 }
 
+// Issue 38's timing preset: COCO's timing experiment, every cheap optimiser on the sphere at
+// D = 2 ... 100, one evaluation budget for all.
+TEST(StudyDesign, TheTimingPresetTimesTheSphereAtCocosDimensions) {
+    const PreparedStudy timing = prepare_study(find_study_preset("timing").study);
+    EXPECT_EQ(test_support::problem_specs(timing),
+              (std::vector<std::string>{"sphere:dim=2", "sphere:dim=3", "sphere:dim=5", "sphere:dim=10",
+                                        "sphere:dim=20", "sphere:dim=40", "sphere:dim=100"}));
+    EXPECT_EQ(timing.algorithms.size(), 11u);
+    EXPECT_EQ(timing.algorithms.front().info.spec, "random-search"); // the floor, first
+    EXPECT_EQ(timing.budget_texts, (std::vector<std::string>{"evaluations=200000"}));
+}
+
 // Issue 35's presets: the flux map against every optimiser at two budgets, and the ladder of three
 // identification problems, each with a known, non-zero f* for the relative target (1e-6 |f*|).
 TEST(StudyDesign, TheFluxMapAndLadderPresetsMeasureSuccessRelativeToFStar) {
