@@ -76,13 +76,15 @@ void test_dimensions(const std::vector<std::vector<double>>& points, double alph
 
 void locate_points(const std::vector<std::vector<double>>& points, BiasAudit& audit) {
     std::vector<double> run_means;
-    std::size_t near_bound = 0;
+    std::size_t near_lower = 0;
+    std::size_t near_upper = 0;
     std::size_t coordinates = 0;
     for (const auto& x : points) {
         double sum = 0.0;
         for (double v : x) {
             sum += std::fabs(v - 0.5);
-            near_bound += v <= bias_bound_width || v >= 1.0 - bias_bound_width ? 1U : 0U;
+            near_lower += v <= bias_bound_width ? 1U : 0U;
+            near_upper += v >= 1.0 - bias_bound_width ? 1U : 0U;
         }
         run_means.push_back(sum / static_cast<double>(x.size()));
         coordinates += x.size();
@@ -92,7 +94,10 @@ void locate_points(const std::vector<std::vector<double>>& points, BiasAudit& au
         mean += m / static_cast<double>(run_means.size());
     audit.centre_distance = mean;
     audit.centre_distance_p = one_sample_t_p(run_means, uniform_centre_distance);
+    const std::size_t near_bound = near_lower + near_upper;
     audit.near_bound_share = static_cast<double>(near_bound) / static_cast<double>(coordinates);
+    audit.near_lower_share = static_cast<double>(near_lower) / static_cast<double>(coordinates);
+    audit.near_upper_share = static_cast<double>(near_upper) / static_cast<double>(coordinates);
     audit.near_bound_p = binomial_upper_p(near_bound, coordinates, uniform_bound_share);
 }
 

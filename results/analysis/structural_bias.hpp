@@ -55,6 +55,9 @@ struct BiasAudit {
     double centre_distance = std::numeric_limits<double>::quiet_NaN(); // mean |x - 0.5|
     double centre_distance_p = 1;                                      // t-test against 0.25
     double near_bound_share = std::numeric_limits<double>::quiet_NaN();
+    // Of near_bound_share, the coordinates within bias_bound_width of 0 and of 1: which bound pulls.
+    double near_lower_share = std::numeric_limits<double>::quiet_NaN();
+    double near_upper_share = std::numeric_limits<double>::quiet_NaN();
     double near_bound_p = 1; // binomial, against 0.02
     std::string verdict;     // "no bias detected", "centre", "bounds" or "other"
 };

@@ -171,13 +171,15 @@ Lines problem_effects_lines(const std::vector<ComponentVerdict>& effects) {
     return out;
 }
 
-// "centre (KS 12/30, AD 15/30 dims; |x-0.5| 0.183; 3.1% near bounds)": uniform is 0.25 and 2%.
+// "bounds (KS 0/30, AD 30/30 dims; |x-0.5| 0.261; near 0/1: 11.1/7.1%)": uniform is 0.25 and 1%
+// near each bound (within 0.01).
 std::string bias_evidence(const BiasAudit& audit) {
     const std::string dims = std::to_string(audit.dimensions.size());
     return audit.verdict + " (KS " + std::to_string(audit.ks_rejected) + "/" + dims + ", AD " +
            std::to_string(audit.ad_rejected) + "/" + dims + " dims; |x-0.5| " +
-           format_fixed(audit.centre_distance, 3) + "; " + format_fixed(100.0 * audit.near_bound_share, 1) +
-           "% near bounds)";
+           format_fixed(audit.centre_distance, 3) +
+           "; near 0/1: " + format_fixed(100.0 * audit.near_lower_share, 1) + "/" +
+           format_fixed(100.0 * audit.near_upper_share, 1) + "%)";
 }
 
 void append(Lines& to, const Lines& from) {
@@ -210,8 +212,8 @@ Lines per_problem_detail(const BudgetVerdict& verdict, std::size_t room) {
 std::vector<std::string> verdict_lines(const BudgetVerdict& verdict, std::size_t max_lines) {
     Lines lines = {budget_heading(verdict)};
     if (!verdict.bias.empty()) // f0: where the final points lie, not a ranking
-        lines.push_back(
-            "Structural bias on f0 (final points against uniform; uniform: |x-0.5| 0.25, 2% near bounds):");
+        lines.push_back("Structural bias on f0 (final points against uniform; uniform: |x-0.5| 0.25, 1% near "
+                        "0 and near 1):");
     for (const auto& [label, audit] : verdict.bias)
         lines.push_back("  " + label + ": " + bias_evidence(audit));
     if (verdict.problems.size() == 1) {

@@ -14,7 +14,8 @@ std::string bias_caption(const StudyIndex& index, double alpha) {
            format_number(alpha) +
            ". Mean |x - 0.5| is 0.25 for uniform points (two-sided one-sample t-test of the runs' means); "
            "near a bound: share of coordinates within 0.01 of 0 or 1, 2% for uniform points (exact binomial "
-           "test, one-sided). Verdict: no bias detected when no dimension is rejected; otherwise centre "
+           "test, one-sided), split into near 0 and near 1 (1% each). Verdict: no bias detected when no "
+           "dimension is rejected; otherwise centre "
            "(significantly nearer the centre), bounds (significantly many coordinates near a bound, or "
            "farther from the centre) or other." +
            left_out_notes(index);
@@ -34,8 +35,9 @@ std::optional<Table> structural_bias_table(const StudyIndex& index, double alpha
     t.title = "Structural bias: uniformity of the final points on f0";
     if (several_problems)
         t.header.push_back("Problem");
-    for (const char* h : {"Algorithm", "Runs", "Dimensions", "KS rejects", "AD rejects", "Smallest Holm p",
-                          "Mean |x - 0.5|", "p (centre)", "Near a bound", "p (bound)", "Verdict"})
+    for (const char* h :
+         {"Algorithm", "Runs", "Dimensions", "KS rejects", "AD rejects", "Smallest Holm p", "Mean |x - 0.5|",
+          "p (centre)", "Near a bound", "Near 0", "Near 1", "p (bound)", "Verdict"})
         t.header.emplace_back(h);
     for (const auto& a : audits) {
         std::vector<TableCell> row;
@@ -50,6 +52,8 @@ std::optional<Table> structural_bias_table(const StudyIndex& index, double alpha
         row.push_back(fixed_cell(a.centre_distance, 3));
         row.push_back(number_cell(a.centre_distance_p, 2));
         row.push_back(fixed_cell(a.near_bound_share, 3));
+        row.push_back(fixed_cell(a.near_lower_share, 3));
+        row.push_back(fixed_cell(a.near_upper_share, 3));
         row.push_back(number_cell(a.near_bound_p, 2));
         row.push_back(text_cell(a.verdict));
         t.add_row(std::move(row));

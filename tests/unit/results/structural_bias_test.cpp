@@ -51,6 +51,10 @@ TEST(StructuralBias, PointsClampedToTheBoundsAreBounds) {
     EXPECT_EQ(a.ad_rejected, 30U); // a value at 0 or 1 is certain rejection for AD
     EXPECT_GT(a.near_bound_share, 0.3);
     EXPECT_LT(a.near_bound_p, 1e-10);
+    // The two bounds, each taking about half (u < 0.5 decides which), add up to the share.
+    EXPECT_DOUBLE_EQ(a.near_lower_share + a.near_upper_share, a.near_bound_share);
+    EXPECT_GT(a.near_lower_share, 0.12);
+    EXPECT_GT(a.near_upper_share, 0.12);
 }
 
 TEST(StructuralBias, PointsOnOneSideAreOther) {
