@@ -1,6 +1,9 @@
 #include "results/tables/verdict_tables.hpp"
 
+#include <algorithm>
 #include <optional>
+
+#include "results/tables/table_cells.hpp"
 
 namespace mhb {
 
@@ -57,19 +60,32 @@ std::optional<Table> effects_verdict_table(const BudgetVerdict& verdict) {
     t.id = "verdict_effects";
     t.title = "Verdict on each component";
     t.header = {"Design", "Problem", "Component", "Verdict", "Mean effect", "p (Holm)", "Response"};
+    // The Bayesian reading beside the test, where it was computed (bayesian_effects.hpp).
+    const auto computed = [](const ComponentVerdict& e) {
+        return e.p_lowers + e.p_no_effect + e.p_raises > 0;
+    };
+    const bool bayesian = std::any_of(verdict.effects.begin(), verdict.effects.end(), computed);
+    if (bayesian)
+        t.header.insert(t.header.end(), {"P(lowers f)", "P(no effect)", "P(raises f)"});
     for (const auto& e : verdict.effects) {
         std::vector<TableCell> row = {text_cell(e.design),    text_cell(e.problem),
                                       text_cell(e.component), text_cell(component_effect_text(e.effect)),
                                       number_cell(e.mean, 3), number_cell(e.adjusted_p, 2),
                                       text_cell(e.scale)};
         row[3].bold = e.effect == ComponentEffect::helps || e.effect == ComponentEffect::hurts;
+        if (bayesian)
+            for (const double p : {e.p_lowers, e.p_no_effect, e.p_raises})
+                row.push_back(computed(e) ? fixed_cell(p, 2) : tables::empty_cell());
         t.add_row(std::move(row));
     }
     t.caption =
         "Main effect of each switch: mean over blocks of the response with the switch on minus off "
         "(negative: lower f, the component helps); Wilcoxon signed-rank test of the per-block effects "
         "against 0, Holm across the effects of one design and problem, " +
-        alpha_phrase(verdict) + ". Interactions: the effects table.";
+        alpha_phrase(verdict) + ". Interactions: the effects table." +
+        (bayesian ? " P(...): the Bayesian signed-rank test of the same per-block effects with its ROPE (the "
+                    "bayesian table's method)."
+                  : "");
     format_columns(t);
     return t;
 }

@@ -124,6 +124,7 @@ TEST(Verdict, SaysWhatEachComponentDoesPooledFirst) {
     ASSERT_EQ(tables.size(), 2u); // one problem: no ranking across problems
     EXPECT_EQ(tables[0].id, "verdict_effects");
     EXPECT_EQ(tables[0].rows[0][3].text, "hurts");
+    EXPECT_EQ(tables[0].header.size(), 7u); // no Bayesian test computed: no probability columns
 }
 
 TEST(VerdictLines, PrintTheRankingOfOneProblem) {
