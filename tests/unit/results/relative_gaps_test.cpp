@@ -90,11 +90,11 @@ StudyData gap_study(const std::string& budget = gap_budget) {
         data.runs.push_back(gap_run(gap_fluxmap, "b", i, 36.0, flux_b[static_cast<std::size_t>(i)], false));
     }
     for (std::int64_t i = 0; i < 4; ++i) {
-        RunRecord r = gap_run(gap_sphere, "a", i, 1.0, 1.0, false);
-        r.f_opt = 0.0;
-        data.runs.push_back(r);
-        r.algorithm = "b";
-        data.runs.push_back(r);
+        for (const char* algorithm : {"a", "b"}) {
+            RunRecord r = gap_run(gap_sphere, algorithm, i, 1.0, 1.0, false);
+            r.f_opt = 0.0;
+            data.runs.push_back(std::move(r));
+        }
     }
     for (auto& r : data.runs)
         r.budget = budget;
