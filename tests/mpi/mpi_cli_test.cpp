@@ -91,8 +91,9 @@ TEST(MpiCli, AStudyInterruptedInOneProcessIsFinishedUnderMpirun) {
 // Runs by precision: rank 0 plans each round from the results, every rank runs it, and the
 // stopping points are a one-process run's.
 TEST(MpiCli, RunsByPrecisionStopWhereOneProcessStops) {
-    const std::string by_precision = "--algorithms 'itlbo tlbo pso' --problems 'sphere:dim=5 pmsm' --iterations 60 "
-                                     "--runs auto --precision 0.15 --max-runs 30 --no-report ";
+    const std::string by_precision =
+        "--algorithms 'itlbo tlbo pso' --problems 'sphere:dim=5 pmsm' --iterations 60 "
+        "--runs auto --precision 0.15 --max-runs 30 --no-report ";
     const fs::path one = fresh("precision_one");
     const auto single = run_mhbench("run " + by_precision + "--threads 1 --quiet --out " + one.string());
     ASSERT_EQ(single.exit_code, 0) << single.err;
