@@ -249,7 +249,8 @@ TEST(StudyFileDesign, EveryErrorOfAFileIsReportedWithItsLine) {
                      "problems = sphere:dim={2,2}\n",
                      "bad.ini", s, errors);
     const std::string known_keys =
-        "algorithms, algorithm, problems, problem, runs, precision, max-runs, initial-runs, round-runs, seed, seeds, iterations, "
+        "algorithms, algorithm, problems, problem, runs, precision, max-runs, initial-runs, round-runs, "
+        "seed, seeds, iterations, "
         "evaluations, budget, budgets, target, relative-target, protocol, plugins, "
         "plugin";
     EXPECT_EQ(errors,
