@@ -80,6 +80,7 @@ std::optional<std::uint64_t> parse_seed(const std::string& value) {
 
 po::options_description study_options() {
     po::options_description d("Study (the same names in study files: key = value)");
+    const PrecisionRule rule; // its defaults, declared once
     using specs = std::vector<std::string>;
     // clang-format off
     d.add_options()
@@ -99,9 +100,12 @@ po::options_description study_options() {
          "with --runs auto: add runs to a cell (an algorithm on a problem at a budget) in rounds until the "
          "standard error of its mean difference to the reference, on log10(f - f*) (f where f* is unknown), "
          "is at most this, e.g. 0.05")
-        ("max-runs", po::value<std::string>(), "with --runs auto: the most runs a cell gets (default 100)")
-        ("initial-runs", po::value<std::string>(), "with --runs auto: the runs every cell starts with (default 10)")
-        ("round-runs", po::value<std::string>(), "with --runs auto: the runs a round adds to an unsettled cell (default 5)")
+        ("max-runs", po::value<std::string>(),
+         ("with --runs auto: the most runs a cell gets (default " + std::to_string(rule.max) + ")").c_str())
+        ("initial-runs", po::value<std::string>(),
+         ("with --runs auto: the runs every cell starts with (default " + std::to_string(rule.initial) + ")").c_str())
+        ("round-runs", po::value<std::string>(),
+         ("with --runs auto: the runs a round adds to an unsettled cell (default " + std::to_string(rule.step) + ")").c_str())
         ("seed", po::value<std::string>(), "study seed, 0 to 2^64-1; every run's seed is derived from it (default 1)")
         ("seeds", po::value<std::string>(),
          "common (default): run r on problem p starts from the same stream for every algorithm (common "
