@@ -146,6 +146,24 @@ std::vector<BiasAudit> structural_bias_audits(const StudyIndex& index, double al
     return audits;
 }
 
+std::optional<std::string> uniformity_tests_csv(const StudyIndex& index, double alpha) {
+    const std::vector<BiasAudit> audits = structural_bias_audits(index, alpha);
+    if (audits.empty())
+        return std::nullopt;
+    std::string csv =
+        "problem,algorithm,runs,dimension,ks_statistic,ks_p,ks_holm_p,ad_statistic,ad_p,ad_holm_p\n";
+    char numbers[200];
+    for (const BiasAudit& a : audits)
+        for (std::size_t j = 0; j < a.dimensions.size(); ++j) {
+            const DimensionUniformity& d = a.dimensions[j];
+            std::snprintf(numbers, sizeof numbers, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", d.ks.statistic,
+                          d.ks.p_value, d.ks_holm_p, d.ad.statistic, d.ad.p_value, d.ad_holm_p);
+            csv += csv_field(a.problem) + ',' + csv_field(index.label(a.algorithm)) + ',' +
+                   std::to_string(a.runs) + ',' + std::to_string(j + 1) + ',' + numbers + '\n';
+        }
+    return csv;
+}
+
 std::optional<std::string> final_points_csv(const StudyIndex& index) {
     const auto& problems = index.problems();
     if (std::none_of(problems.begin(), problems.end(), is_bias_problem))

@@ -78,4 +78,9 @@ std::vector<BiasAudit> structural_bias_audits(const StudyIndex& index, double al
 // budget has no f0 problem.
 std::optional<std::string> final_points_csv(const StudyIndex& index);
 
+// Every per-dimension test of the audits, one dimension a row: problem,algorithm,runs,dimension,
+// ks_statistic,ks_p,ks_holm_p,ad_statistic,ad_p,ad_holm_p (every digit), so that each number of the
+// structural_bias table can be checked against another implementation. None without an f0 problem.
+std::optional<std::string> uniformity_tests_csv(const StudyIndex& index, double alpha);
+
 } // namespace mhb

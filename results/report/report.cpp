@@ -282,6 +282,7 @@ void write_curve_data(const StudyIndex& index, const std::string& budget, const 
     const std::optional<std::string> final_points = final_points_csv(index); // f0's structural bias
     write_or_remove(dir / "final_points.csv", final_points);
     files.final_points = final_points.has_value();
+    write_or_remove(dir / "uniformity_tests.csv", uniformity_tests_csv(index, alpha));
     std::error_code ec;
     // Tables a report may leave out: stale copies from an earlier report would mislead.
     for (const std::string& format : table_format_names()) {

@@ -184,6 +184,21 @@ and figure): one row per coordinate of each successful run's best point.
 | dimension | the coordinate, from 1 |
 | x | its value in [0, 1] (best_x of runs.csv, every digit) |
 
+### uniformity_tests.csv
+
+The structural-bias audit's tests, one row per problem, algorithm and dimension: the final points'
+coordinate in that dimension against U(0, 1), over the `runs` successful runs.
+
+| column | meaning |
+| --- | --- |
+| problem, algorithm | the f0 problem and the algorithm's label |
+| runs | the final points tested |
+| dimension | the coordinate, from 1 |
+| ks_statistic, ks_p | Kolmogorov-Smirnov D and its exact two-sided p-value (as scipy.stats.kstest(x, "uniform")) |
+| ks_holm_p | ks_p Holm-adjusted across the dimensions |
+| ad_statistic, ad_p | Anderson-Darling A^2 against U(0, 1) and its p-value (Marsaglia and Marsaglia 2004) |
+| ad_holm_p | ad_p Holm-adjusted across the dimensions |
+
 )";
 
 const char* const bayesian_files = R"(### bayesian_probabilities.csv, bayesian_samples.csv

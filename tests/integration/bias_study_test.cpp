@@ -36,6 +36,13 @@ TEST(BiasStudy, ThePresetTakesAnyOptimiserListAndReportsWhereTheFinalPointsLie) 
     EXPECT_EQ(points[1].rfind("f0:dim=30,Random search,0,1,", 0), 0u) << points[1];
     EXPECT_NE(mhb::testing_cli::read_text(report / "README.md").find("### final_points.csv"),
               std::string::npos);
+    // Every test behind the table's counts, a dimension a row, for a check by another implementation.
+    const std::vector<std::string> tests =
+        lines_of(mhb::testing_cli::read_text(report / "uniformity_tests.csv"));
+    ASSERT_EQ(tests.size(), 1u + 2u * 30u);
+    EXPECT_EQ(tests.front(),
+              "problem,algorithm,runs,dimension,ks_statistic,ks_p,ks_holm_p,ad_statistic,ad_p,ad_holm_p");
+    EXPECT_EQ(tests[1].rfind("f0:dim=30,Random search,12,1,", 0), 0u) << tests[1];
 }
 
 } // namespace
