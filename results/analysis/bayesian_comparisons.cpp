@@ -4,26 +4,14 @@
 #include <algorithm>
 #include <oneapi/tbb/parallel_for.h>
 
-#include "problems/core/rng.hpp" // stable_hash, mix64: a test's seed from its names
-#include "results/analysis/factorial_effects.hpp"
+#include "problems/core/rng.hpp"              // stable_hash, mix64: a test's seed from its names
+#include "results/analysis/run_precision.hpp" // compared_value: the scale runs are compared on
 #include "results/analysis/statistics.hpp"
 #include "results/store/csv.hpp"
 
 namespace mhb {
 
 namespace {
-
-double compared_value(const RunRecord& r, bool log10_gap) {
-    return log10_gap ? gap_response(r.best_f, *r.f_opt) : r.best_f;
-}
-
-// x - y, with two equal infinities a zero difference (as in the signed-rank test), not NaN.
-std::vector<double> differences(const std::vector<double>& x, const std::vector<double>& y) {
-    std::vector<double> z;
-    for (std::size_t i = 0; i < x.size(); ++i)
-        z.push_back(x[i] == y[i] ? 0.0 : x[i] - y[i]);
-    return z;
-}
 
 BayesianSignedRankOptions test_options(const std::string& problem, const std::string& algorithm,
                                        const std::string& reference, double rope, std::size_t kept_samples) {
@@ -47,20 +35,20 @@ std::optional<BayesianComparison> on_problem(const StudyIndex& index, const std:
     c.rope = c.log10_gap ? std::optional<double>(rope.log10_gap) : rope.raw;
     if (!c.paired)
         return c;
-    const bool gap = c.log10_gap;
-    const PairedValues v =
-        paired_values(ref, other, [gap](const RunRecord& r) { return compared_value(r, gap); });
+    // The log10 gap where the problem knows f* (then every run of both does), else f.
+    const PairedValues v = paired_values(ref, other, [](const RunRecord& r) { return compared_value(r); });
     if (v.x.empty())
         return std::nullopt;
-    c.result = bayesian_signed_rank(differences(v.x, v.y), test_options(problem, algorithm, reference,
-                                                                        c.rope.value_or(0.0), kept_samples));
+    c.result =
+        bayesian_signed_rank(paired_differences(v.x, v.y),
+                             test_options(problem, algorithm, reference, c.rope.value_or(0.0), kept_samples));
     return c;
 }
 
 double median_value(const RunGroup& g) {
     std::vector<double> values;
     for (const RunRecord* r : g.runs)
-        values.push_back(compared_value(*r, true));
+        values.push_back(compared_value(*r)); // the log10 gap: every run knows f*
     return median_of(values);
 }
 
@@ -87,8 +75,8 @@ std::optional<BayesianComparison> across_problems(const StudyIndex& index, const
     c.algorithm = algorithm;
     c.across_problems = true;
     c.rope = rope.log10_gap;
-    c.result = bayesian_signed_rank(
-        differences(x, y), test_options(c.problem, algorithm, reference, rope.log10_gap, kept_samples));
+    c.result = bayesian_signed_rank(paired_differences(x, y), test_options(c.problem, algorithm, reference,
+                                                                           rope.log10_gap, kept_samples));
     return c;
 }
 

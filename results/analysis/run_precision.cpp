@@ -30,19 +30,6 @@ double standard_error_of_mean(const std::vector<double>& values) {
     return standard_deviation(values) / std::sqrt(static_cast<double>(values.size()));
 }
 
-std::vector<double> paired_differences(const std::vector<double>& values,
-                                       const std::vector<double>& reference, std::int64_t n) {
-    std::vector<double> d;
-    for (std::int64_t i = 0; i < n; ++i) {
-        const double a = values[static_cast<std::size_t>(i)];
-        const double b = reference[static_cast<std::size_t>(i)];
-        if (std::isnan(a) || std::isnan(b))
-            continue;
-        d.push_back(a == b ? 0.0 : a - b); // inf == inf: a tie, not inf - inf
-    }
-    return d;
-}
-
 } // namespace
 
 double compared_value(const RunRecord& run) {
@@ -62,7 +49,9 @@ double standard_error(const std::vector<double>& values, const std::vector<doubl
     if (paired) {
         const std::int64_t both =
             std::min<std::int64_t>(n, static_cast<std::int64_t>(std::min(values.size(), reference->size())));
-        return standard_error_of_mean(paired_differences(values, *reference, both));
+        const auto first = static_cast<std::size_t>(both);
+        return standard_error_of_mean(
+            paired_differences(std::span(values).first(first), std::span(*reference).first(first)));
     }
     const double a = standard_error_of_mean(usable(values, n));
     const double b = standard_error_of_mean(usable(*reference, n));

@@ -77,6 +77,14 @@ Summary summarize(const std::vector<double>& values) {
     return s;
 }
 
+std::vector<double> paired_differences(std::span<const double> x, std::span<const double> y) {
+    std::vector<double> d;
+    for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i)
+        if (!std::isnan(x[i]) && !std::isnan(y[i]))
+            d.push_back(x[i] == y[i] ? 0.0 : x[i] - y[i]);
+    return d;
+}
+
 std::optional<double> expected_running_time(const std::vector<TargetHit>& runs) {
     double evaluations = 0.0;
     std::size_t successes = 0;

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace mhb {
@@ -41,6 +42,10 @@ double standard_deviation(const std::vector<double>& values);
 double quantile_sorted(const std::vector<double>& sorted, double p);
 // The median (type 7) of an unsorted sample; 0 for an empty one.
 double median_of(std::vector<double> values);
+// x[i] - y[i] over the pairs of the two samples (the shorter's length), two equal values a zero
+// difference (two equal infinities are a tie, not inf - inf = NaN); a pair holding a NaN (a failed
+// run) is left out.
+std::vector<double> paired_differences(std::span<const double> x, std::span<const double> y);
 
 // One run as the ERT sees it: whether it reached the target and the evaluations it spent
 // (to the target if it did, in total otherwise).
