@@ -124,14 +124,10 @@ void print_pilot_runs(const std::string& dir, double precision) {
                 if (group == nullptr || ref == nullptr ||
                     (algorithm == reference && index.algorithms().size() > 1))
                     continue;
-                const PairedValues pairs = algorithm == reference
-                                               ? PairedValues{group->final_values(), {}}
-                                               : paired_values(*group, *ref, compared_value);
-                std::vector<double> differences;
-                for (std::size_t i = 0; i < pairs.x.size(); ++i)
-                    differences.push_back(pairs.y.empty()            ? pairs.x[i]
-                                          : pairs.x[i] == pairs.y[i] ? 0.0
-                                                                     : pairs.x[i] - pairs.y[i]);
+                // The rule's own scale (compared_value); a study of one algorithm: its values alone.
+                const PairedValues pairs = paired_values(*group, *ref, compared_value);
+                const std::vector<double> differences =
+                    algorithm == reference ? pairs.x : paired_differences(pairs.x, pairs.y);
                 const double sd = standard_deviation(differences);
                 char line[300];
                 std::snprintf(line, sizeof line, "  %-28s %-16s %3zu pilot runs, sd %-9.3g -> %s\n",
